@@ -1,0 +1,429 @@
+// The scene kit: options, report, run. See scene.hpp.
+#include "scene.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "rigid/todo.hpp"
+
+namespace kit {
+
+namespace {
+
+std::string number(double x) {
+    std::ostringstream s;
+    s << std::setprecision(17) << x;
+    return s.str();
+}
+
+std::string short_number(double x) {
+    std::ostringstream s;
+    s << std::setprecision(6) << x;
+    return s.str();
+}
+
+// strtod over the whole word, or BadInput naming the option.
+double parse_real(const std::string& name, const std::string& word) {
+    if (word.empty()) throw BadInput("--" + name + ": needs a value (a number)");
+    char* end = nullptr;
+    errno = 0;
+    const double x = std::strtod(word.c_str(), &end);
+    if (end == word.c_str() || *end != '\0')
+        throw BadInput("--" + name + ": '" + word + "' is not a number");
+    return x;
+}
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    out += buf;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out + "\"";
+}
+
+// JSON has no NaN or infinity: they become null, and the report's headline check
+// has already refused a non-finite headline error.
+std::string json_number(double x) { return std::isfinite(x) ? number(x) : "null"; }
+
+std::string json_value(const Value& v) {
+    return std::visit(
+        [](const auto& x) -> std::string {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, double>) {
+                return json_number(x);
+            } else if constexpr (std::is_same_v<T, long>) {
+                return std::to_string(x);
+            } else if constexpr (std::is_same_v<T, std::string>) {
+                return json_string(x);
+            } else if constexpr (std::is_same_v<T, bool>) {
+                return x ? "true" : "false";
+            } else if constexpr (std::is_same_v<T, rigid::Vec3>) {
+                return "[" + json_number(x.x()) + ", " + json_number(x.y()) + ", " + json_number(x.z()) + "]";
+            } else {
+                std::string out = "[";
+                for (std::size_t i = 0; i < x.size(); ++i) out += (i ? ", " : "") + json_number(x[i]);
+                return out + "]";
+            }
+        },
+        v);
+}
+
+std::string text_value(const Value& v) {
+    return std::visit(
+        [](const auto& x) -> std::string {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, double>) {
+                return short_number(x);
+            } else if constexpr (std::is_same_v<T, long>) {
+                return std::to_string(x);
+            } else if constexpr (std::is_same_v<T, std::string>) {
+                return x;
+            } else if constexpr (std::is_same_v<T, bool>) {
+                return x ? "yes" : "no";
+            } else if constexpr (std::is_same_v<T, rigid::Vec3>) {
+                return "(" + short_number(x.x()) + ", " + short_number(x.y()) + ", " + short_number(x.z()) + ")";
+            } else {
+                std::string out = "[";
+                for (std::size_t i = 0; i < x.size(); ++i) out += (i ? ", " : "") + short_number(x[i]);
+                return out + "]";
+            }
+        },
+        v);
+}
+
+}  // namespace
+
+Rule finite() { return {"a finite number", [](double x) { return std::isfinite(x); }}; }
+Rule positive() { return {"a finite number > 0", [](double x) { return std::isfinite(x) && x > 0; }}; }
+Rule non_negative() { return {"a finite number >= 0", [](double x) { return std::isfinite(x) && x >= 0; }}; }
+Rule at_least(double lo) {
+    return {"a finite number >= " + short_number(lo), [lo](double x) { return std::isfinite(x) && x >= lo; }};
+}
+Rule between(double lo, double hi) {
+    return {"a number in [" + short_number(lo) + ", " + short_number(hi) + "]",
+            [lo, hi](double x) { return std::isfinite(x) && x >= lo && x <= hi; }};
+}
+VecRule finite_vector() {
+    return {"three finite numbers x,y,z", [](const rigid::Vec3& v) { return v.allFinite(); }};
+}
+VecRule nonzero_vector() {
+    return {"three finite numbers x,y,z, not all zero",
+            [](const rigid::Vec3& v) { return v.allFinite() && v.stableNorm() > 0; }};
+}
+
+// ---------------------------------------------------------------------------- Options
+
+Options::Options(std::string scene, std::string summary) : scene_(std::move(scene)), summary_(std::move(summary)) {}
+
+Options::Spec& Options::add(const std::string& name) {
+    if (find(name)) throw std::logic_error("option --" + name + " declared twice");
+    specs_.push_back({});
+    specs_.back().name = name;
+    return specs_.back();
+}
+
+const Options::Spec* Options::find(const std::string& name) const {
+    for (const auto& s : specs_)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+Options& Options::real(const std::string& name, double fallback, const std::string& help, Rule rule) {
+    Spec& s = add(name);
+    s.kind = "number";
+    s.help = help;
+    s.rule_text = rule.text;
+    s.shown_default = short_number(fallback);
+    reals_[name] = fallback;
+    s.set = [this, name, rule](const std::string& word) {
+        const double x = parse_real(name, word);
+        if (!rule.holds(x)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
+        reals_[name] = x;
+    };
+    return *this;
+}
+
+Options& Options::integer(const std::string& name, long fallback, const std::string& help, long min, long max) {
+    Spec& s = add(name);
+    s.kind = "integer";
+    s.help = help;
+    s.rule_text = "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    s.shown_default = std::to_string(fallback);
+    integers_[name] = fallback;
+    s.set = [this, name, min, max, rule_text = s.rule_text](const std::string& word) {
+        char* end = nullptr;
+        errno = 0;
+        const long x = word.empty() ? 0 : std::strtol(word.c_str(), &end, 10);
+        if (word.empty() || *end != '\0' || errno == ERANGE || x < min || x > max)
+            throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule_text);
+        integers_[name] = x;
+    };
+    return *this;
+}
+
+Options& Options::vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help, VecRule rule) {
+    Spec& s = add(name);
+    s.kind = "x,y,z";
+    s.help = help;
+    s.rule_text = rule.text;
+    s.shown_default = short_number(fallback.x()) + "," + short_number(fallback.y()) + "," + short_number(fallback.z());
+    vectors_[name] = fallback;
+    s.set = [this, name, rule](const std::string& word) {
+        rigid::Vec3 v;
+        std::stringstream in(word);
+        std::string part;
+        int n = 0;
+        while (std::getline(in, part, ',')) {
+            if (n == 3) throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule.text);
+            v(n++) = parse_real(name, part);
+        }
+        if (n != 3) throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule.text);
+        if (!rule.holds(v)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
+        vectors_[name] = v;
+    };
+    return *this;
+}
+
+Options& Options::choice(const std::string& name, const std::string& fallback,
+                         const std::vector<std::string>& choices, const std::string& help) {
+    Spec& s = add(name);
+    s.kind = "word";
+    s.help = help;
+    s.choices = choices;
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : "|") + c;
+    s.rule_text = "one of " + list;
+    s.shown_default = fallback;
+    choices_[name] = fallback;
+    s.set = [this, name, choices, list](const std::string& word) {
+        for (const auto& c : choices)
+            if (c == word) {
+                choices_[name] = word;
+                return;
+            }
+        throw BadInput("--" + name + ": got '" + word + "'; it must be one of " + list);
+    };
+    return *this;
+}
+
+bool Options::parse(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h") {
+            print_help(std::cout);
+            return false;
+        }
+        if (arg == "--json") {
+            json_ = true;
+            continue;
+        }
+        if (arg == "--no-figure") {
+            figures_ = false;
+            continue;
+        }
+        if (arg.rfind("--", 0) != 0) throw BadInput("unexpected argument '" + arg + "' (options start with --; see --help)");
+        std::string name = arg.substr(2), value;
+        bool has_value = false;
+        if (const auto eq = name.find('='); eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+            has_value = true;
+        }
+        const Spec* spec = find(name);
+        if (name != "out" && !spec) throw BadInput("unknown option --" + name + " (see --help)");
+        if (!has_value) {
+            // A value may itself start with '-' (a negative number), but never with "--".
+            if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
+                throw BadInput("--" + name + ": needs a value" + (spec ? " (" + spec->rule_text + ")" : " (a folder)"));
+            value = argv[++i];
+        }
+        if (name == "out") {
+            if (value.empty()) throw BadInput("--out: needs a folder name");
+            out_dir_ = value;
+        } else {
+            spec->set(value);
+        }
+    }
+    return true;
+}
+
+double Options::real(const std::string& name) const { return reals_.at(name); }
+long Options::integer(const std::string& name) const { return integers_.at(name); }
+rigid::Vec3 Options::vector(const std::string& name) const { return vectors_.at(name); }
+const std::string& Options::choice(const std::string& name) const { return choices_.at(name); }
+
+void Options::print_help(std::ostream& os) const {
+    os << scene_ << ": " << summary_ << "\n\nUsage: " << scene_ << " [options]\n\nOptions:\n";
+    for (const auto& s : specs_) {
+        os << "  --" << s.name << " <" << s.kind << ">\n      " << s.help << "\n      must be " << s.rule_text
+           << "; default " << s.shown_default << "\n";
+    }
+    os << "  --out DIR      folder for the figures (default: the current folder)\n"
+          "  --no-figure    compute and report, draw nothing\n"
+          "  --json         print the results as one JSON object on stdout\n"
+          "  --help         this text\n\n"
+          "Exit status: 0 success; 2 bad input; 1 numerical failure or an exercise not written yet.\n";
+}
+
+// ---------------------------------------------------------------------------- Report
+
+void Report::headline(const std::string& error_measure, double error, double run_time_s) {
+    if (!std::isfinite(error))
+        throw NumericalFailure("the error (" + error_measure + ") is " + number(error) + ", not a finite number");
+    has_headline_ = true;
+    error_measure_ = error_measure;
+    error_ = error;
+    run_time_s_ = run_time_s;
+}
+
+void Report::add(const std::string& key, Value value, const std::string& note) {
+    fields_.push_back({key, std::move(value), note});
+}
+
+void Report::table(const std::string& key, std::vector<std::string> columns, std::vector<std::vector<double>> rows,
+                   bool in_text) {
+    tables_.push_back({key, std::move(columns), std::move(rows), in_text});
+}
+
+void Report::write_text(std::ostream& os) const {
+    if (has_headline_) {
+        os << "  error     " << std::setw(12) << short_number(error_) << "   " << error_measure_ << "\n"
+           << "  run time  " << std::setw(12) << short_number(run_time_s_) << "   s\n";
+    }
+    std::size_t width = 0;
+    for (const auto& f : fields_) width = std::max(width, f.key.size());
+    for (const auto& f : fields_) {
+        os << "  " << std::left << std::setw(static_cast<int>(width)) << f.key << std::right << "  " << text_value(f.value);
+        if (!f.note.empty()) os << "   " << f.note;
+        os << "\n";
+    }
+    for (const auto& t : tables_) {
+        if (!t.in_text) {
+            os << "  " << t.key << ": " << t.rows.size() << " rows (in the --json output)\n";
+            continue;
+        }
+        os << "\n  " << t.key << ":\n  ";
+        for (const auto& c : t.columns) os << std::setw(16) << c;
+        os << "\n";
+        for (const auto& r : t.rows) {
+            os << "  ";
+            for (double x : r) os << std::setw(16) << short_number(x);
+            os << "\n";
+        }
+    }
+    for (const auto& n : notes_) os << "  note: " << n << "\n";
+}
+
+void Report::write_json(std::ostream& os, const Options& opts, const std::vector<std::string>& figures) const {
+    os << "{\n  \"scene\": " << json_string(opts.scene()) << ",\n  \"summary\": " << json_string(opts.summary());
+    if (has_headline_) {
+        os << ",\n  \"error_measure\": " << json_string(error_measure_) << ",\n  \"error\": " << json_number(error_)
+           << ",\n  \"run_time_s\": " << json_number(run_time_s_);
+    }
+    for (const auto& f : fields_) os << ",\n  " << json_string(f.key) << ": " << json_value(f.value);
+    for (const auto& t : tables_) {
+        os << ",\n  " << json_string(t.key) << ": {\"columns\": [";
+        for (std::size_t i = 0; i < t.columns.size(); ++i) os << (i ? ", " : "") << json_string(t.columns[i]);
+        os << "], \"rows\": [";
+        for (std::size_t r = 0; r < t.rows.size(); ++r) {
+            os << (r ? ",\n    [" : "\n    [");
+            for (std::size_t i = 0; i < t.rows[r].size(); ++i) os << (i ? ", " : "") << json_number(t.rows[r][i]);
+            os << "]";
+        }
+        os << "]}";
+    }
+    os << ",\n  \"notes\": [";
+    for (std::size_t i = 0; i < notes_.size(); ++i) os << (i ? ", " : "") << json_string(notes_[i]);
+    os << "],\n  \"figures\": [";
+    for (std::size_t i = 0; i < figures.size(); ++i) os << (i ? ", " : "") << json_string(figures[i]);
+    os << "]\n}\n";
+}
+
+// ---------------------------------------------------------------------------- Scene
+
+void Scene::stage_figure(const std::string& staged, const std::string& final_path) { staged_.emplace_back(staged, final_path); }
+
+void Scene::publish_figures() {
+    for (const auto& [staged, final_path] : staged_) {
+        std::filesystem::rename(staged, final_path);
+        published_.push_back(final_path);
+    }
+    staged_.clear();
+}
+
+void Scene::discard_figures() {
+    for (const auto& [staged, final_path] : staged_) {
+        std::error_code ignored;
+        std::filesystem::remove(staged, ignored);
+    }
+    staged_.clear();
+}
+
+int run(int argc, char** argv, Options& opts, const std::function<void(const Options&, Scene&)>& body) {
+    const std::string who = opts.scene();
+    try {
+        if (!opts.parse(argc, argv)) return 0;
+    } catch (const BadInput& e) {
+        std::cerr << who << ": bad input: " << e.what() << "\n";
+        return 2;
+    }
+    Scene scene(opts);
+    try {
+        const auto t0 = std::chrono::steady_clock::now();
+        body(opts, scene);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!scene.report.has_headline())
+            throw std::logic_error("the scene gave no headline (error against run time)");
+        scene.publish_figures();
+        if (opts.json()) {
+            scene.report.add("wall_time_s", wall, "the whole scene, figures included");
+            scene.report.write_json(std::cout, opts, scene.figures());
+        } else {
+            std::cout << who << ": " << opts.summary() << "\n";
+            scene.report.write_text(std::cout);
+            for (const auto& f : scene.figures()) std::cout << "  figure: " << f << "\n";
+        }
+        return 0;
+    } catch (const BadInput& e) {
+        scene.discard_figures();
+        std::cerr << who << ": bad input: " << e.what() << "\n";
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        scene.discard_figures();
+        std::cerr << who << ": bad input: " << e.what() << "\n";
+        return 2;
+    } catch (const rigid::not_implemented& e) {
+        scene.discard_figures();
+        std::cerr << who << ": this scene needs an exercise you have not written yet: " << e.what() << "\n";
+        return 1;
+    } catch (const NumericalFailure& e) {
+        scene.discard_figures();
+        std::cerr << who << ": numerical failure: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        scene.discard_figures();
+        std::cerr << who << ": failed: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace kit

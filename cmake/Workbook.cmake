@@ -1,0 +1,268 @@
+# CMake helpers for the Grioli workbook: dependencies, the API topics (one function written
+# once, in two implementations), the graders, the scenes and the main job.
+include_guard(GLOBAL)
+
+get_filename_component(WORKBOOK_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+
+# ------------------------------------------------------------------------------------------
+# Dependencies: each missing piece stops the configure step with the Debian package to install.
+macro(workbook_missing what package)
+  message(FATAL_ERROR
+    "\n${what} was not found.\n"
+    "Install it with:  sudo apt-get install ${package}\n"
+    "(or run cmake/workbook, which installs every missing package itself).\n")
+endmacro()
+
+macro(workbook_find_dependencies)
+  find_package(Eigen3 3.3 QUIET NO_MODULE)
+  if(NOT Eigen3_FOUND)
+    workbook_missing("Eigen 3 (linear algebra)" libeigen3-dev)
+  endif()
+  find_package(GSL QUIET)
+  if(NOT GSL_FOUND)
+    workbook_missing("GSL, the GNU Scientific Library" libgsl-dev)
+  endif()
+  find_package(doctest QUIET)
+  if(NOT doctest_FOUND)
+    workbook_missing("doctest (the graders' test framework)" doctest-dev)
+  endif()
+  include(doctest)  # doctest_discover_tests(), shipped with doctest-dev
+  find_package(Boost 1.65 QUIET COMPONENTS iostreams filesystem)
+  if(NOT Boost_FOUND)
+    workbook_missing("Boost.Iostreams and Boost.Filesystem (used by gnuplot-iostream)"
+                     "libboost-iostreams-dev libboost-filesystem-dev")
+  endif()
+  find_path(GNUPLOT_IOSTREAM_INCLUDE_DIR gnuplot-iostream.h)
+  if(NOT GNUPLOT_IOSTREAM_INCLUDE_DIR)
+    workbook_missing("gnuplot-iostream.h" libgnuplot-iostream-dev)
+  endif()
+  find_program(GNUPLOT_EXECUTABLE gnuplot)
+  if(NOT GNUPLOT_EXECUTABLE)
+    workbook_missing("The gnuplot program (draws every figure)" gnuplot-nox)
+  endif()
+endmacro()
+
+# ------------------------------------------------------------------------------------------
+# Warnings: -Wall -Wextra -Wpedantic everywhere; errors when WORKBOOK_WERROR is on (CI).
+function(workbook_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic
+                         $<$<BOOL:${WORKBOOK_WERROR}>:-Werror>)
+endfunction()
+
+# Where a topic's implementation comes from: "solutions", "exercises", or a folder.
+function(workbook_resolve_impl)
+  if(WORKBOOK_IMPL STREQUAL "solutions")
+    set(dir "${WORKBOOK_ROOT}/solutions")
+  elseif(WORKBOOK_IMPL STREQUAL "exercises")
+    set(dir "${WORKBOOK_ROOT}/exercises")
+  else()
+    get_filename_component(dir "${WORKBOOK_IMPL}" ABSOLUTE BASE_DIR "${CMAKE_BINARY_DIR}")
+    if(NOT IS_DIRECTORY "${dir}")
+      message(FATAL_ERROR "WORKBOOK_IMPL='${WORKBOOK_IMPL}': no such folder. "
+        "Use solutions, exercises, or a folder holding your exercises/*.cpp files.")
+    endif()
+  endif()
+  set(WORKBOOK_IMPL_DIR "${dir}" PARENT_SCOPE)
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# One API topic: exercises/rigid/<name>.hpp, with solutions/<name>.cpp and exercises/<name>.cpp.
+#
+#   workbook_topic(<name> [DEPENDS <topic>...] [LIBS <target>...])
+#
+# Makes rigid_<name> from the chosen implementation (WORKBOOK_IMPL; only the topics listed in
+# WORKBOOK_TOPICS when that is set), and for the stub gate rigid_<name>_solutions and
+# rigid_<name>_stubs. A stub library links the reference versions of its dependencies, so
+# each topic's graders see only that topic's stubs.
+function(_workbook_topic_library target source deps libs)
+  add_library(${target} STATIC "${source}")
+  target_include_directories(${target} PUBLIC "${WORKBOOK_ROOT}/exercises")
+  target_link_libraries(${target} PUBLIC Eigen3::Eigen ${deps} ${libs})
+  workbook_warnings(${target})
+  get_filename_component(dir "${source}" DIRECTORY)
+  if(NOT dir STREQUAL "${WORKBOOK_ROOT}/solutions")
+    # Stubs name parameters they do not use yet: that is not worth a warning.
+    target_compile_options(${target} PRIVATE -Wno-unused-parameter)
+  endif()
+endfunction()
+
+function(workbook_topic name)
+  cmake_parse_arguments(T "" "" "DEPENDS;LIBS" ${ARGN})
+  set(impl_dir "${WORKBOOK_IMPL_DIR}")
+  if(WORKBOOK_TOPICS AND NOT name IN_LIST WORKBOOK_TOPICS)
+    set(impl_dir "${WORKBOOK_ROOT}/solutions")
+  endif()
+  set(source "${impl_dir}/${name}.cpp")
+  if(NOT EXISTS "${source}")
+    message(FATAL_ERROR "WORKBOOK_IMPL='${WORKBOOK_IMPL}': the file ${name}.cpp is missing from ${impl_dir}.")
+  endif()
+  set(deps "")
+  set(ref_deps "")
+  foreach(d IN LISTS T_DEPENDS)
+    list(APPEND deps rigid_${d})
+    list(APPEND ref_deps rigid_${d}_solutions)
+  endforeach()
+  _workbook_topic_library(rigid_${name} "${source}" "${deps}" "${T_LIBS}")
+  if(WORKBOOK_IMPL STREQUAL "solutions")
+    add_library(rigid_${name}_solutions ALIAS rigid_${name})
+  else()
+    _workbook_topic_library(rigid_${name}_solutions "${WORKBOOK_ROOT}/solutions/${name}.cpp" "${ref_deps}" "${T_LIBS}")
+  endif()
+  if(WORKBOOK_STUB_GATE)
+    _workbook_topic_library(rigid_${name}_stubs "${WORKBOOK_ROOT}/exercises/${name}.cpp" "${ref_deps}" "${T_LIBS}")
+  endif()
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_TOPIC_LIST ${name})
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The graders of one topic: tests/<topic>_test.cpp, one doctest binary per implementation.
+#
+#   workbook_grader(<topic> CHAPTER <label>)
+#
+# grade_<topic> grades the chosen implementation; every test case becomes one CTest test
+# (its own process), labelled with the chapter. For the stub gate, grade_<topic>_solutions
+# and grade_<topic>_stubs grade the reference and the pristine stubs.
+function(workbook_grader topic)
+  cmake_parse_arguments(G "" "CHAPTER" "" ${ARGN})
+  foreach(flavour IN ITEMS "" _solutions _stubs)
+    if(flavour STREQUAL "_solutions" AND WORKBOOK_IMPL STREQUAL "solutions")
+      continue()  # grade_<topic> already is the reference
+    endif()
+    if(flavour STREQUAL "_stubs" AND NOT WORKBOOK_STUB_GATE)
+      continue()
+    endif()
+    set(exe grade_${topic}${flavour})
+    add_executable(${exe} "${WORKBOOK_ROOT}/tests/${topic}_test.cpp")
+    target_include_directories(${exe} PRIVATE "${WORKBOOK_ROOT}/tests")
+    target_link_libraries(${exe} PRIVATE workbook_doctest_main rigid_${topic}${flavour} doctest::doctest)
+    set_target_properties(${exe} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
+    workbook_warnings(${exe})
+  endforeach()
+  doctest_discover_tests(grade_${topic} TEST_PREFIX "${G_CHAPTER}: "
+                         PROPERTIES LABELS "grader;${G_CHAPTER}" TIMEOUT 120)
+  if(WORKBOOK_STUB_GATE)
+    if(TARGET grade_${topic}_solutions)
+      set(ref grade_${topic}_solutions)
+    else()
+      set(ref grade_${topic})
+    endif()
+    set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_ARGS
+                 "${topic}" "$<TARGET_FILE:${ref}>" "$<TARGET_FILE:grade_${topic}_stubs>")
+    set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_TARGETS ${ref} grade_${topic}_stubs)
+  endif()
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# A scene: a small driver in chapters/NN_slug/ that draws a figure or prints a table.
+#
+#   workbook_scene(<name> TOPICS <topic>... [FIGURES] [LIBS <target>...] [ARGS <arg>...])
+#
+# Links only what it names: the topics it uses, the kit, and the figure helper (Boost and
+# gnuplot-iostream) only with FIGURES. ARGS are the options the main job runs it with.
+# Registers a smoke test (scene.<name>) that runs it with --json and checks its report and
+# figures.
+function(workbook_scene name)
+  cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS" ${ARGN})
+  get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+  add_executable(${name} ${name}.cpp)
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/scenes")
+  target_link_libraries(${name} PRIVATE workbook_kit ${S_LIBS})
+  foreach(t IN LISTS S_TOPICS)
+    target_link_libraries(${name} PRIVATE rigid_${t})
+  endforeach()
+  if(S_FIGURES)
+    target_link_libraries(${name} PRIVATE workbook_kit_figure)
+  endif()
+  workbook_warnings(${name})
+  set(smoke "${CMAKE_BINARY_DIR}/smoke/${name}")
+  set(args "")
+  foreach(a IN LISTS S_ARGS)
+    string(APPEND args "|${a}")
+  endforeach()
+  add_test(NAME "scene: ${name}"
+           COMMAND ${CMAKE_COMMAND} -DEXPECT=0 -DOUT=${smoke} -DFIGURES=${S_FIGURES}
+                   "-DCOMMAND=$<TARGET_FILE:${name}>|--json|--out|${smoke}${args}"
+                   -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
+  set_tests_properties("scene: ${name}" PROPERTIES LABELS "scene;${chapter}" TIMEOUT 300)
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_LIST "${chapter}|${name}|$<TARGET_FILE:${name}>${args}")
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_TARGETS ${name})
+endfunction()
+
+# A bad-input check: the scene must exit with status 2, say MESSAGE (a regex) on stderr,
+# and leave no file behind.
+#
+#   workbook_scene_rejects(<scene> <label> MESSAGE <regex> ARGS <arg>...)
+function(workbook_scene_rejects scene label)
+  cmake_parse_arguments(R "" "MESSAGE" "ARGS" ${ARGN})
+  set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-rejects-${label}")
+  set(args "")
+  foreach(a IN LISTS R_ARGS)
+    string(APPEND args "|${a}")
+  endforeach()
+  add_test(NAME "bad input: ${scene} ${label}"
+           COMMAND ${CMAKE_COMMAND} -DEXPECT=2 -DOUT=${out} "-DMESSAGE=${R_MESSAGE}"
+                   "-DCOMMAND=$<TARGET_FILE:${scene}>|--out|${out}${args}"
+                   -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
+  set_tests_properties("bad input: ${scene} ${label}" PROPERTIES LABELS "scene;bad-input" TIMEOUT 60)
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The chapters, in the order of chapters/README.md: the one list that drives book and build.
+function(workbook_chapters)
+  file(STRINGS "${WORKBOOK_ROOT}/chapters/README.md" lines REGEX "\\]\\([0-9][0-9]_[a-z0-9_]+/README\\.md\\)")
+  set(chapters "")
+  foreach(line IN LISTS lines)
+    string(REGEX MATCH "\\(([0-9][0-9]_[a-z0-9_]+)/README\\.md\\)" _ "${line}")
+    set(ch "${CMAKE_MATCH_1}")
+    if(NOT IS_DIRECTORY "${WORKBOOK_ROOT}/chapters/${ch}")
+      message(FATAL_ERROR "chapters/README.md lists ${ch}, but chapters/${ch}/ does not exist")
+    endif()
+    list(APPEND chapters "${ch}")
+    if(EXISTS "${WORKBOOK_ROOT}/chapters/${ch}/CMakeLists.txt")
+      add_subdirectory("${WORKBOOK_ROOT}/chapters/${ch}" "${CMAKE_BINARY_DIR}/chapters/${ch}")
+    endif()
+  endforeach()
+  set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST ${chapters})
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The main job (target `workbook`): run every scene, write every figure and the report of
+# each scene's error against its run time. Call once, after every scene is declared.
+function(workbook_main_job)
+  get_property(scenes GLOBAL PROPERTY WORKBOOK_SCENE_LIST)
+  get_property(scene_targets GLOBAL PROPERTY WORKBOOK_SCENE_TARGETS)
+  string(REPLACE ";" "\n" scene_lines "${scenes}")
+  file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/report/scenes.txt" CONTENT "${scene_lines}\n")
+  if(WORKBOOK_IMPL STREQUAL "solutions" AND NOT WORKBOOK_TOPICS)
+    set(figures "${WORKBOOK_ROOT}/figures")     # the committed figures, from the reference
+  else()
+    set(figures "${CMAKE_BINARY_DIR}/figures")  # a student's figures never overwrite them
+  endif()
+  add_custom_target(workbook
+    COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/scenes.txt
+            -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report
+            -DIMPL=${WORKBOOK_IMPL} -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
+    DEPENDS ${scene_targets}
+    USES_TERMINAL
+    COMMENT "Running every scene: figures in ${figures}, report in ${CMAKE_BINARY_DIR}/report")
+endfunction()
+
+# The stub gate: every grading test passes on solutions/ and fails on the pristine stubs.
+function(workbook_stub_gate)
+  if(NOT WORKBOOK_STUB_GATE)
+    return()
+  endif()
+  get_property(args GLOBAL PROPERTY WORKBOOK_GATE_ARGS)
+  add_test(NAME "stub gate: every grading test passes on solutions and fails on the stubs"
+           COMMAND stub_gate ${args})
+  set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
+                       PROPERTIES LABELS "gate" TIMEOUT 600)
+  # The gate itself must be able to fail: handed the reference as if it were the stubs,
+  # it must find every test "passing on the stubs" and say so.
+  list(GET args 0 topic)
+  list(GET args 1 reference)
+  add_test(NAME "stub gate: fails when a grader passes on its stubs"
+           COMMAND stub_gate "${topic}" "${reference}" "${reference}")
+  set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
+                       LABELS "gate" WILL_FAIL TRUE)
+endfunction()

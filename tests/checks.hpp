@@ -1,0 +1,59 @@
+// Assertions for the graders: explicit tolerances, both sides printed, NaN always fails.
+//
+// Every check is written as CHECK(distance <= tol): a NaN distance makes the comparison
+// false, so a NaN result can never pass (CHECK_FALSE(distance > tol) would let it through).
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rigid/types.hpp"
+
+namespace checks {
+
+inline double max_abs_diff(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    if (a.rows() != b.rows() || a.cols() != b.cols()) return NAN;
+    return (a - b).cwiseAbs().maxCoeff();
+}
+
+// A fixed-seed generator, reseeded at the start of every test case (tests/main.cpp): a test
+// draws the same "random" cases whether it runs alone or after others, so a failure
+// reproduces and a grader run in one process agrees with one run test by test.
+std::mt19937_64& rng();
+inline double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng());
+}
+inline rigid::Vec3 random_vector(double scale = 1.0) {
+    return scale * rigid::Vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+}
+inline rigid::Vec3 random_unit() {
+    rigid::Vec3 v;
+    do v = random_vector(); while (v.norm() < 0.1);
+    return v.normalized();
+}
+
+}  // namespace checks
+
+// |actual - expected| <= tol, with both values and the tolerance in the failure message.
+#define CHECK_NEAR(actual, expected, tol)                                                   \
+    do {                                                                                   \
+        const double check_actual_ = (actual), check_expected_ = (expected);              \
+        const double check_tol_ = (tol);                                                   \
+        INFO("expected " << check_expected_ << ", actual " << check_actual_ << ", |diff| " \
+                         << std::abs(check_actual_ - check_expected_) << ", tolerance "    \
+                         << check_tol_);                                                   \
+        CHECK(std::abs(check_actual_ - check_expected_) <= check_tol_);                    \
+    } while (0)
+
+// Largest entry of |A - B| <= tol, with both matrices in the failure message.
+#define CHECK_MAT_NEAR(A, B, tol)                                                        \
+    do {                                                                                \
+        const Eigen::MatrixXd check_a_ = (A), check_b_ = (B);                           \
+        const double check_tol_ = (tol);                                                \
+        INFO("expected\n" << check_b_ << "\nactual\n" << check_a_ << "\nmax |diff| "     \
+                          << checks::max_abs_diff(check_a_, check_b_) << ", tolerance " \
+                          << check_tol_);                                               \
+        CHECK(checks::max_abs_diff(check_a_, check_b_) <= check_tol_);                  \
+    } while (0)
