@@ -114,6 +114,30 @@ function(workbook_topic name)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_TOPIC_LIST ${name})
 endfunction()
 
+# A provided library: code in exercises/rigid/ that the workbook gives the student (not an
+# exercise), the same in every implementation. Topics may DEPENDS on it like on a topic.
+#
+#   workbook_provided(<name> SOURCES <file>... [LIBS <target>...])
+function(workbook_provided name)
+  cmake_parse_arguments(P "" "" "SOURCES;LIBS" ${ARGN})
+  list(TRANSFORM P_SOURCES PREPEND "${WORKBOOK_ROOT}/")
+  add_library(rigid_${name} STATIC ${P_SOURCES})
+  target_include_directories(rigid_${name} PUBLIC "${WORKBOOK_ROOT}/exercises")
+  target_link_libraries(rigid_${name} PUBLIC Eigen3::Eigen ${P_LIBS})
+  workbook_warnings(rigid_${name})
+  add_library(rigid_${name}_solutions ALIAS rigid_${name})
+endfunction()
+
+# Tests of a provided library (tests/<name>_test.cpp): ordinary tests, outside the stub gate.
+function(workbook_unit_test name)
+  add_executable(test_${name} "${WORKBOOK_ROOT}/tests/${name}_test.cpp")
+  target_include_directories(test_${name} PRIVATE "${WORKBOOK_ROOT}/tests")
+  target_link_libraries(test_${name} PRIVATE workbook_doctest_main rigid_${name} doctest::doctest)
+  set_target_properties(test_${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
+  workbook_warnings(test_${name})
+  doctest_discover_tests(test_${name} TEST_PREFIX "provided: " PROPERTIES LABELS "provided" TIMEOUT 120)
+endfunction()
+
 # ------------------------------------------------------------------------------------------
 # The graders of one topic: tests/<topic>_test.cpp, one doctest binary per implementation.
 #
