@@ -46,13 +46,15 @@ inline void require_body(const BodyAtG& b) {
     require_positive(b.B_g, "B_g");
     require_positive(b.C_g, "C_g");
     require_positive(b.mu, "the mass mu");
-    std::ostringstream got;
-    got.precision(17);
-    got << " (got A_g = " << b.A_g << ", B_g = " << b.B_g << ", C_g = " << b.C_g << ")";
-    if (!(b.A_g < b.B_g && b.B_g < b.C_g))
-        throw std::invalid_argument("the moments at G must be strictly ordered, A_g < B_g < C_g" + got.str());
-    if (!(b.A_g + b.B_g > b.C_g))
-        throw std::invalid_argument("the moments at G must obey the triangle inequality A_g + B_g > C_g" + got.str());
+    auto fail = [&b](const std::string& rule) {
+        std::ostringstream s;
+        s.precision(17);
+        s << "the moments at G must " << rule << " (got A_g = " << b.A_g << ", B_g = " << b.B_g
+          << ", C_g = " << b.C_g << ")";
+        throw std::invalid_argument(s.str());
+    };
+    if (!(b.A_g < b.B_g && b.B_g < b.C_g)) fail("be strictly ordered, A_g < B_g < C_g");
+    if (!(b.A_g + b.B_g > b.C_g)) fail("obey the triangle inequality A_g + B_g > C_g");
 }
 // end snippet
 
