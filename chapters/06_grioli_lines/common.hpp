@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "../../tests/quad_reference.hpp"
 #include "rigid/inertia.hpp"
 #include "scene.hpp"
 
@@ -60,41 +61,50 @@ inline EigenMoments eigen_moments(const Mat3& I) {
             es.eigenvectors().col(others[0]), es.eigenvectors().col(iB), es.eigenvectors().col(others[1])};
 }
 
+inline double root(double x) { return std::sqrt(x); }
+inline quadref::quad root(quadref::quad x) { return quadref::sqrt_q(x); }
+
 // snippet: printed_forms
-// [P, Sect. 6] as printed, with h = mu L^2 and z = (zA, 0, zC): the forms the workbook checks.
+// [P, Sect. 6] as printed, with h = mu L^2 and z = (zA, 0, zC): the forms the workbook checks,
+// in double (T = double) or in binary128 (T = quadref::quad, to tell a misprint from round-off).
+template <class T>
 struct Printed {
-    double h, zA, zC;
-    double Ag, Bg, Cg;
-    double dplus() const { return Ag * zA * zA + Cg * zC * zC; }             // (5.5)
-    double D1() const {                                                      // (5.4), first form
-        return (Ag + Cg + h) * (Ag + Cg + h) - 4 * (Ag * Cg + h * dplus());
-    }
-    double D2() const { return h * h + 2 * (Cg + Ag - 2 * dplus()) * h + (Cg - Ag) * (Cg - Ag); }
-    double D3() const { return h * h + 2 * (Cg - Ag) * (zA * zA - zC * zC) * h + (Cg - Ag) * (Cg - Ag); }
-    double C() const { return 0.5 * (Ag + Cg + h + std::sqrt(D3())); }      // (5.3)
-    double B() const { return Bg + h; }
-    double A() const { return 0.5 * (Ag + Cg + h - std::sqrt(D3())); }
-    double alpha510() const { return -h + 2 * h * zA * zA + (Cg - Ag); }    // (5.10): not a frequency
-    double D510() const { return alpha510() * alpha510() + 4 * h * h * zA * zA * zC * zC; }
-    double vC_over_vA() const {                                              // (5.9), both forms
-        return (std::sqrt(D3()) - alpha510()) / (2 * h * zA * zC);
-    }
-    double vC_over_vA_first() const { return (Ag - A() + h * zC * zC) / (h * zA * zC); }
-    double cos2_511() const {                                                // (5.11) solved for cos^2
-        const double s = std::sqrt(D3()), t = 2 * h * zA * zA + s - alpha510();
+    T h, zA, zC;
+    T Ag, Bg, Cg;
+    T dplus() const { return Ag * zA * zA + Cg * zC * zC; }                 // (5.5)
+    T D1() const { return (Ag + Cg + h) * (Ag + Cg + h) - 4 * (Ag * Cg + h * dplus()); }  // (5.4)
+    T D2() const { return h * h + 2 * (Cg + Ag - 2 * dplus()) * h + (Cg - Ag) * (Cg - Ag); }
+    T D3() const { return h * h + 2 * (Cg - Ag) * (zA * zA - zC * zC) * h + (Cg - Ag) * (Cg - Ag); }
+    T C() const { return (Ag + Cg + h + root(D3())) / 2; }                 // (5.3)
+    T B() const { return Bg + h; }
+    T A() const { return (Ag + Cg + h - root(D3())) / 2; }
+    T alpha510() const { return -h + 2 * h * zA * zA + (Cg - Ag); }        // (5.10): not a frequency
+    T D510() const { return alpha510() * alpha510() + 4 * h * h * zA * zA * zC * zC; }
+    T vC_over_vA_first() const { return (Ag - A() + h * zC * zC) / (h * zA * zC); }        // (5.9)
+    T vC_over_vA() const { return (root(D3()) - alpha510()) / (2 * h * zA * zC); }
+    T cos2_511() const {                                                    // (5.11) solved for cos^2
+        const T s = root(D3()), t = 2 * h * zA * zA + s - alpha510();
         return zC * zC * t * t / (2 * s * (s - alpha510()));
     }
-    double cos2_512() const {                                                // (5.12)
-        const double c2g = zA * zA - zC * zC;
-        return 0.5 + (h + (Cg - Ag) * c2g) / (2 * std::sqrt(h * h + 2 * h * (Cg - Ag) * c2g + (Cg - Ag) * (Cg - Ag)));
+    T cos2_512() const {                                                    // (5.12)
+        const T c2g = zA * zA - zC * zC;
+        return T(0.5) + (h + (Cg - Ag) * c2g) / (2 * root(h * h + 2 * h * (Cg - Ag) * c2g + (Cg - Ag) * (Cg - Ag)));
     }
-    double ratio_513() const { return 0.5 + (2 * Bg - Ag - Cg + h) / (2 * std::sqrt(D3())); }  // (5.13)
-    double h_crit_58() const { return -(Bg - Ag) * (Cg - Bg) / (Cg + Ag - Bg - dplus()); }   // (5.8)
+    T ratio_513() const { return T(0.5) + (2 * Bg - Ag - Cg + h) / (2 * root(D3())); }   // (5.13)
+    T h_crit_58() const { return -(Bg - Ag) * (Cg - Bg) / (Cg + Ag - Bg - dplus()); }      // (5.8)
 };
 // end snippet
 
-inline Printed printed(const BodyAtG& b, double L, const Vec3& z) {
+inline Printed<double> printed(const BodyAtG& b, double L, const Vec3& z) {
     return {b.mu * L * L, z.x(), z.z(), b.A_g, b.B_g, b.C_g};
+}
+
+// The same in binary128: every double input converts exactly, and z is normalised there (a
+// double z is a unit vector only to ~1e-16, which (5.11) would feel through sqrt(D) - alpha).
+inline Printed<quadref::quad> printed_q(const BodyAtG& b, double L, const Vec3& z) {
+    using q = quadref::quad;
+    const q n = quadref::sqrt_q(q(z.x()) * z.x() + q(z.z()) * z.z());
+    return {q(b.mu) * L * L, z.x() / n, z.z() / n, b.A_g, b.B_g, b.C_g};
 }
 
 }  // namespace ch6
