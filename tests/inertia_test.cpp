@@ -129,7 +129,7 @@ TEST_CASE("inertia_tensor: equals the component sums I_11 = sum m (y^2 + z^2) an
     }
 }
 
-TEST_CASE("inertia_tensor: rejects no points, a mass that is not positive and non-finite input") {
+TEST_CASE("inertia_tensor: rejects no points and a mass that is not positive and non-finite input") {
     const std::vector<rigid::PointMass> one{{1.0, Vec3(1, 0, 0)}};
     CHECK_THROWS_AS(rigid::inertia_tensor({}, Vec3::Zero()), std::invalid_argument);
     CHECK_THROWS_AS(rigid::inertia_tensor({{0.0, Vec3(1, 0, 0)}}, Vec3::Zero()), std::invalid_argument);
@@ -140,7 +140,7 @@ TEST_CASE("inertia_tensor: rejects no points, a mass that is not positive and no
     CHECK_MAT_NEAR(rigid::inertia_tensor(one, Vec3::Zero()), Vec3(0, 1, 1).asDiagonal().toDenseMatrix(), 0.0);
 }
 
-TEST_CASE("six_point_body: has mass mu, its centre of mass at G and the moments diag(A_g, B_g, C_g)") {
+TEST_CASE("six_point_body: has mass mu and its centre of mass at G and the moments diag(A_g B_g C_g)") {
     for (int n = 0; n < 20; ++n) {
         const BodyAtG b = random_body();
         const auto pts = rigid::six_point_body(b);
@@ -158,7 +158,7 @@ TEST_CASE("six_point_body: has mass mu, its centre of mass at G and the moments 
     }
 }
 
-TEST_CASE("six_point_body: rejects unordered moments, a broken triangle inequality, mu <= 0 and NaN") {
+TEST_CASE("six_point_body: rejects unordered moments and a broken triangle inequality and mu <= 0 and NaN") {
     CHECK(message_of([] { rigid::six_point_body({2, 1, 2.5, 1}); }).find("strictly ordered") != std::string::npos);
     CHECK(message_of([] { rigid::six_point_body({1, 1, 1.5, 1}); }).find("strictly ordered") != std::string::npos);
     CHECK(message_of([] { rigid::six_point_body({1, 2, 3, 1}); }).find("triangle inequality") != std::string::npos);
@@ -193,7 +193,7 @@ TEST_CASE("shifted_inertia: keeps x_B an axis with moment B_g + h for shifts in 
     }
 }
 
-TEST_CASE("shifted_inertia: rejects a tensor that is not symmetric or finite, mu <= 0 and a non-finite shift") {
+TEST_CASE("shifted_inertia: rejects a tensor that is not symmetric or finite and mu <= 0 and a non-finite shift") {
     Mat3 bad = Mat3::Identity();
     bad(0, 1) = 0.5;
     CHECK_THROWS_AS(rigid::shifted_inertia(bad, 1, Vec3(1, 0, 0)), std::invalid_argument);
@@ -316,7 +316,7 @@ TEST_CASE("printed_moments: equal the eigen-solver at moderate distances") {
     }
 }
 
-TEST_CASE("shifted_moments: reject L <= 0, non-finite values, a bad body and a z off the principal plane") {
+TEST_CASE("shifted_moments: reject L <= 0 and non-finite values and a bad body and a z off the principal plane") {
     const Vec3 z = rigid::shift_direction(0.4);
     for (auto f : {&rigid::shifted_moments, &rigid::printed_moments}) {
         CHECK(message_of([&] { f(body0, 0.0, z); }).find("distance L") != std::string::npos);
@@ -348,7 +348,7 @@ TEST_CASE("critical_cos2: separates the lines on which B and C change places fro
     }
 }
 
-TEST_CASE("critical_h: is where the eigen-solver finds B = C, by bisection") {
+TEST_CASE("critical_h: is where a bisection on the eigen-solver finds B = C") {
     for (int n = 0; n < 20; ++n) {
         const BodyAtG b = random_body();
         const double c2 = rigid::critical_cos2(b) * checks::uniform(0, 0.95);
@@ -489,7 +489,7 @@ TEST_CASE("grioli_ratio: is (B - A)/(C - A) and (C - B)/(C - A) from the differe
 
 // ------------------------------------------------------------------------------ axes at O
 
-TEST_CASE("principal_frame: is a right-handed frame of eigenvectors with R^T I R = diag(A, B, C)") {
+TEST_CASE("principal_frame: is a right-handed frame of eigenvectors with R^T I R = diag(A B C)") {
     for (int n = 0; n < 100; ++n) {
         const BodyAtG b = random_body();
         const Vec3 z = random_plane_direction();
@@ -526,7 +526,7 @@ TEST_CASE("principal_frame: along x_A the axes at O are the axes at G at every d
 
 // ------------------------------------------------------------------------------ (5.14), (5.15)
 
-TEST_CASE("grioli_direction: is a unit vector at the critical angle, on the asymptotes of the hyperbola") {
+TEST_CASE("grioli_direction: is a unit vector at the critical angle on the asymptotes of the hyperbola") {
     for (int n = 0; n < 20; ++n) {
         const BodyAtG b = random_body();
         for (int sign : {1, -1}) {
@@ -656,7 +656,7 @@ TEST_CASE("circular_section_normals: at G they are the Grioli lines") {
     }
 }
 
-TEST_CASE("circular_section_normals: rejects a tensor that is not symmetric, not positive or has equal eigenvalues") {
+TEST_CASE("circular_section_normals: rejects a tensor that is not symmetric or not positive or has equal eigenvalues") {
     Mat3 bad = Vec3(1, 2, 3).asDiagonal();
     bad(0, 2) = 0.5;
     CHECK_THROWS_AS(rigid::circular_section_normals(bad), std::invalid_argument);
