@@ -122,19 +122,19 @@ int main(int argc, char** argv) {
             kit::Figure fig(scene, file, 960, 480);
             if (!fig.enabled()) return;
             fig << "set multiplot layout 1,2\nset xlabel 'distance L from G to O'\nset ylabel 'moment of inertia at O'\n"
-                   "set encoding utf8\nset key below horizontal box opaque\nset xrange [0:" + std::to_string(L_max) + "]\n";
+                   "set encoding utf8\nset key top left box opaque\nset xrange [0:" + std::to_string(L_max) + "]\n";
             for (int l = first; l < first + 2; ++l) {
                 fig << "set title " + kit::quoted(lines[l].title) + "\nunset arrow\nunset label\n";
                 if (crossing) {
                     const double h = rigid::critical_h(b, lines[l].z);
                     const double Lc = std::sqrt(h / b.mu);
                     fig << "set arrow from " + std::to_string(Lc) + ", graph 0 to " + std::to_string(Lc) +
-                               ", graph 1 nohead ls 9\nset label 'B = C' at " + std::to_string(Lc) + ", graph 0.94 offset 0.5,0\n";
+                               ", graph 1 nohead ls 9\nset label 'B = C' at " + std::to_string(Lc) + ", graph 0.75 offset 0.5,0\n";
                 }
                 if (l == 0) {
                     const double La = std::sqrt(dCA / b.mu);
                     fig << "set arrow from " + std::to_string(La) + ", graph 0 to " + std::to_string(La) +
-                               ", graph 1 nohead ls 10\nset label 'A = C' at " + std::to_string(La) + ", graph 0.86 offset 0.5,0\n";
+                               ", graph 1 nohead ls 10\nset label 'A = C' at " + std::to_string(La) + ", graph 0.62 offset 0.5,0\n";
                 }
                 fig << "plot '-' using 1:2 with lines ls 1 title 'A', '' using 1:3 with lines ls 2 title 'B = B_g + h', "
                        "'' using 1:4 with lines ls 3 title 'C', "
