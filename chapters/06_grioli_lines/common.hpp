@@ -1,0 +1,110 @@
+// What the Chapter 6 scenes share: the body options, the eigen-solver reference, and the
+// printed forms of [P, Sect. 6] transcribed as printed (to measure them, never to use them).
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "../../tests/quad_reference.hpp"
+#include "rigid/inertia.hpp"
+#include "scene.hpp"
+
+namespace ch6 {
+
+using rigid::BodyAtG;
+using rigid::Mat3;
+using rigid::Vec3;
+
+// --Ag --Bg --Cg --mu, each a finite number > 0; the rules between them are checked by body().
+inline void body_options(kit::Options& o, double A_g = 1.0, double B_g = 2.0, double C_g = 2.5, double mu = 1.0) {
+    o.real("Ag", A_g, "smallest principal moment at the centre of mass, A_g", kit::positive())
+        .real("Bg", B_g, "intermediate principal moment at the centre of mass, B_g", kit::positive())
+        .real("Cg", C_g, "largest principal moment at the centre of mass, C_g", kit::positive())
+        .real("mu", mu, "total mass mu", kit::positive());
+}
+
+// The body of the options, or BadInput naming the options and the rule they break.
+inline BodyAtG body(const kit::Options& o) {
+    const BodyAtG b{o.real("Ag"), o.real("Bg"), o.real("Cg"), o.real("mu")};
+    try {
+        rigid::require_body(b);
+    } catch (const std::invalid_argument& e) {
+        throw kit::BadInput(std::string("--Ag, --Bg, --Cg, --mu: ") + e.what());
+    }
+    return b;
+}
+
+// The body's size: the largest radius of gyration at G, sqrt(C_g / mu).
+inline double size_of(const BodyAtG& b) { return std::sqrt(b.C_g / b.mu); }
+
+// The tensor at O from (5.2), written out here (not through the exercises).
+inline Mat3 tensor_at(const BodyAtG& b, double L, const Vec3& z) {
+    Mat3 I = Vec3(b.A_g, b.B_g, b.C_g).asDiagonal();
+    return I + b.mu * L * L * (Mat3::Identity() - z * z.transpose());
+}
+
+// Eigen's SelfAdjointEigenSolver, with the moments named as in (5.3): B the one whose axis is
+// x_B, A <= C the other two.
+struct EigenMoments {
+    double A, B, C;
+    Vec3 vA, vB, vC;
+};
+inline EigenMoments eigen_moments(const Mat3& I) {
+    Eigen::SelfAdjointEigenSolver<Mat3> es(I);
+    Eigen::Index iB;
+    es.eigenvectors().row(1).cwiseAbs().maxCoeff(&iB);
+    int others[2], n = 0;
+    for (int i = 0; i < 3; ++i)
+        if (i != iB) others[n++] = i;
+    return {es.eigenvalues()(others[0]), es.eigenvalues()(iB), es.eigenvalues()(others[1]),
+            es.eigenvectors().col(others[0]), es.eigenvectors().col(iB), es.eigenvectors().col(others[1])};
+}
+
+inline double root(double x) { return std::sqrt(x); }
+inline quadref::quad root(quadref::quad x) { return quadref::sqrt_q(x); }
+
+// snippet: printed_forms
+// [P, Sect. 6] as printed, with h = mu L^2 and z = (zA, 0, zC): the forms the workbook checks,
+// in double (T = double) or in binary128 (T = quadref::quad, to tell a misprint from round-off).
+template <class T>
+struct Printed {
+    T h, zA, zC;
+    T Ag, Bg, Cg;
+    T dplus() const { return Ag * zA * zA + Cg * zC * zC; }                 // (5.5)
+    T D1() const { return (Ag + Cg + h) * (Ag + Cg + h) - 4 * (Ag * Cg + h * dplus()); }  // (5.4)
+    T D2() const { return h * h + 2 * (Cg + Ag - 2 * dplus()) * h + (Cg - Ag) * (Cg - Ag); }
+    T D3() const { return h * h + 2 * (Cg - Ag) * (zA * zA - zC * zC) * h + (Cg - Ag) * (Cg - Ag); }
+    T C() const { return (Ag + Cg + h + root(D3())) / 2; }                 // (5.3)
+    T B() const { return Bg + h; }
+    T A() const { return (Ag + Cg + h - root(D3())) / 2; }
+    T alpha510() const { return -h + 2 * h * zA * zA + (Cg - Ag); }        // (5.10): not a frequency
+    T D510() const { return alpha510() * alpha510() + 4 * h * h * zA * zA * zC * zC; }
+    T vC_over_vA_first() const { return (Ag - A() + h * zC * zC) / (h * zA * zC); }        // (5.9)
+    T vC_over_vA() const { return (root(D3()) - alpha510()) / (2 * h * zA * zC); }
+    T cos2_511() const {                                                    // (5.11) solved for cos^2
+        const T s = root(D3()), t = 2 * h * zA * zA + s - alpha510();
+        return zC * zC * t * t / (2 * s * (s - alpha510()));
+    }
+    T cos2_512() const {                                                    // (5.12)
+        const T c2g = zA * zA - zC * zC;
+        return T(0.5) + (h + (Cg - Ag) * c2g) / (2 * root(h * h + 2 * h * (Cg - Ag) * c2g + (Cg - Ag) * (Cg - Ag)));
+    }
+    T ratio_513() const { return T(0.5) + (2 * Bg - Ag - Cg + h) / (2 * root(D3())); }   // (5.13)
+    T h_crit_58() const { return -(Bg - Ag) * (Cg - Bg) / (Cg + Ag - Bg - dplus()); }      // (5.8)
+};
+// end snippet
+
+inline Printed<double> printed(const BodyAtG& b, double L, const Vec3& z) {
+    return {b.mu * L * L, z.x(), z.z(), b.A_g, b.B_g, b.C_g};
+}
+
+// The same in binary128: every double input converts exactly, and z is normalised there (a
+// double z is a unit vector only to ~1e-16, which (5.11) would feel through sqrt(D) - alpha).
+inline Printed<quadref::quad> printed_q(const BodyAtG& b, double L, const Vec3& z) {
+    using q = quadref::quad;
+    const q n = quadref::sqrt_q(q(z.x()) * z.x() + q(z.z()) * z.z());
+    return {q(b.mu) * L * L, z.x() / n, z.z() / n, b.A_g, b.B_g, b.C_g};
+}
+
+}  // namespace ch6
