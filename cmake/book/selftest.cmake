@@ -8,7 +8,9 @@ file(REMOVE_RECURSE "${WORK}")
 file(COPY "${ROOT}/cmake/book/page.html" "${ROOT}/cmake/book/book.css" DESTINATION "${tree}/cmake/book")
 
 file(WRITE "${tree}/README.md" "# A workbook broken on purpose\n")
-file(WRITE "${tree}/chapters/README.md" "| 1 | [Mini](01_mini/README.md) |\n")
+file(WRITE "${tree}/chapters/README.md" "| 1 | [Mini](01_mini/README.md) |\n| 2 | [Bare](02_bare/README.md) |\n")
+file(WRITE "${tree}/chapters/02_bare/README.md"
+     "# Chapter 2. Bare\n\n**Before you start.** Chapter 1.\n\n## Errata\n\nNone.\n\n## 2.1 After the errata\n")
 file(WRITE "${tree}/exercises/rigid/mini.hpp" [=[
 // snippet: quoted
 int mini(int x);
@@ -16,6 +18,13 @@ int mini(int x);
 // snippet: never_quoted
 int other(int x);
 // end snippet
+]=])
+file(WRITE "${tree}/chapters/errata.md" [=[
+| Chapter | Where in [P] | Printed | Corrected or qualified | Evidence |
+|---|---|---|---|---|
+| 9 | (1.1) | a | b | off by 1e-3 |
+| 1 | (1.2) | a | b | it looked wrong |
+| 1 | (1.3) | a | b |
 ]=])
 file(WRITE "${tree}/tests/mini_test.cpp" "TEST_CASE(\"mini: doubles\") {}\n")
 file(WRITE "${tree}/chapters/01_mini/mini_scene.cpp" "opts.real(\"alpha\", 1.0, \"a frequency\");\n")
@@ -61,6 +70,10 @@ Math that pandoc cannot read: $\unknowncmd{x}$.
 See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
 
 ## 1.2 The end, without exercises
+
+## Exercises
+
+Do something, somewhere, and check it somehow.
 ]=])
 
 set(failures "")
@@ -95,7 +108,9 @@ check("snippets --check-values"
   EXPECT "has no key 'no_such_key'" "has no row with order = 3"
   COMMAND "${SNIPPETS}" --check-values "${tree}" "${tree}/reports")
 check("book --check-structure"
-  EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section" "its last section is '## 1.2"
+  EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section"
+         "do not say where to work" "do not show how to check the work" "its last section is '## 2.1"
+         "must name a chapter of the contents \\(1..2\\), not '9'" "this one has none" "has 4 cells"
   COMMAND "${BOOK}" --check-structure "${tree}")
 check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"

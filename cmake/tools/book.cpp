@@ -16,7 +16,8 @@
 // and all. Writes <out>/pages.txt for the browser test: file, kind, title per line.
 //
 // --check-structure: every chapter opens with "**Before you start.**" (what the reader
-// should know first), has an "## Errata" section and ends with an "## Exercises" section.
+// should know first), has an "## Errata" section and ends with an "## Exercises" section
+// that names the exercises/ file to work in and shows the command that checks the work.
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -108,16 +109,22 @@ int check_structure(const fs::path& root) {
             continue;
         }
         bool in_fence = false, before_first_h2 = true, knows_first = false, errata = false, title = false;
+        bool names_file = false, shows_command = false;  // in the last section
         std::string last_h2;
         for (const auto& l : prose::read_lines(md)) {
-            if (prose::is_fence(l)) in_fence = !in_fence;
+            if (prose::is_fence(l)) {
+                if (!in_fence && l.find("sh") != std::string::npos) shows_command = true;
+                in_fence = !in_fence;
+            }
             if (in_fence) continue;
             if (l.rfind("# ", 0) == 0) title = true;
             if (l.rfind("## ", 0) == 0) {
                 before_first_h2 = false;
                 last_h2 = l.substr(3);
                 if (last_h2.rfind("Errata", 0) == 0) errata = true;
+                names_file = shows_command = false;
             }
+            if (l.find("exercises/") != std::string::npos) names_file = true;
             if (before_first_h2 && l.find("**Before you start.**") != std::string::npos) knows_first = true;
         }
         if (!title) problems.push_back(name + ": no '# Chapter N. Title' heading");
@@ -125,11 +132,66 @@ int check_structure(const fs::path& root) {
             problems.push_back(name + ": does not open with '**Before you start.**' (what the reader should know first), "
                                "before its first '## ' section");
         if (!errata) problems.push_back(name + ": has no '## Errata' section (say what was checked in [P], even if nothing was wrong)");
-        if (last_h2.rfind("Exercises", 0) != 0)
+        if (last_h2.rfind("Exercises", 0) != 0) {
             problems.push_back(name + ": its last section is '## " + last_h2 +
                                "'; a chapter ends with '## Exercises' (what to implement, where, how to check it)");
+        } else {
+            if (!names_file) problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
+            if (!shows_command) problems.push_back(name + ": its Exercises do not show how to check the work (no ```sh block)");
+        }
     }
-    std::cout << chapters.size() << " chapters checked for 'Before you start', 'Errata' and a closing 'Exercises'\n";
+    // The errata list: each row names its chapter, the place in [P], what [P] prints, what the
+    // workbook uses instead, and the numbers that show it.
+    const fs::path errata = root / "chapters" / "errata.md";
+    int rows = 0;
+    if (fs::exists(errata)) {
+        const std::regex chapter_cell(R"(^\[?([0-9]+)\]?.*)");
+        int line_no = 0;
+        bool in_table = false;
+        for (const auto& l : prose::read_lines(errata)) {
+            ++line_no;
+            const std::string where = "chapters/errata.md:" + std::to_string(line_no);
+            if (l.rfind("|", 0) != 0) {
+                in_table = false;
+                continue;
+            }
+            if (!in_table) {  // the header row, then the |---| row
+                in_table = true;
+                continue;
+            }
+            if (l.find("---") != std::string::npos && l.find_first_not_of("|-: ") == std::string::npos) continue;
+            ++rows;
+            // Cells, split at each | that is not escaped (\|), as GitHub does (even in `code`).
+            std::vector<std::string> cells;
+            const std::string body = l.substr(1, l.size() - 1 - (l.back() == '|' ? 1 : 0));
+            std::string c;
+            for (std::size_t k = 0; k <= body.size(); ++k) {
+                if (k == body.size() || (body[k] == '|' && (k == 0 || body[k - 1] != '\\'))) {
+                    c.erase(0, c.find_first_not_of(' '));
+                    c.erase(c.find_last_not_of(' ') + 1);
+                    cells.push_back(c);
+                    c.clear();
+                } else {
+                    c += body[k];
+                }
+            }
+            if (cells.size() != 5) {
+                problems.push_back(where + ": an errata row has " + std::to_string(cells.size()) +
+                                   " cells; it needs 5 (chapter, where in [P], printed, corrected or qualified, evidence)");
+                continue;
+            }
+            std::smatch m;
+            if (!std::regex_match(cells[0], m, chapter_cell) || std::stoul(m[1]) < 1 || std::stoul(m[1]) > chapters.size())
+                problems.push_back(where + ": the first cell must name a chapter of the contents (1.." +
+                                   std::to_string(chapters.size()) + "), not '" + cells[0] + "'");
+            for (std::size_t c = 1; c < 5; ++c)
+                if (cells[c].empty()) problems.push_back(where + ": an errata row with an empty cell " + std::to_string(c + 1));
+            if (cells[4].find_first_of("0123456789") == std::string::npos)
+                problems.push_back(where + ": the evidence of an erratum gives numbers; this one has none");
+        }
+    }
+    std::cout << chapters.size() << " chapters checked for 'Before you start', 'Errata' and a closing 'Exercises'; "
+              << rows << " rows of chapters/errata.md checked\n";
     for (const auto& p : problems) std::cout << "  " << p << "\n";
     return problems.empty() ? 0 : 1;
 }
@@ -177,7 +239,8 @@ private:
     std::vector<std::string> problems_, notes_;
     std::vector<std::tuple<std::string, std::string, std::string, std::string>> fragments_;  // page, link, target, id
     std::vector<std::string> index_lines(const std::vector<std::string>& contents);
-    int values_shown_ = 0, values_unmeasured_ = 0, figures_copied_ = 0, page_values_ = 0;
+    int values_shown_ = 0, values_unmeasured_ = 0, figures_copied_ = 0, page_values_ = 0, page_unmeasured_ = 0;
+    std::map<std::string, int> unmeasured_by_scene_;  // scenes without a report: values shown as committed
 };
 
 // Path of `from` relative to the folder of the book page `page` ("" or "../").
@@ -234,8 +297,7 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
             problems.push_back("the figure " + key + " does not exist (run: cmake/workbook run)");
             return url;
         }
-        if (from != built && !figures_.empty() && fs::exists(figures_))
-            notes_.push_back(key + ": not drawn by this build, the committed figure is shown");
+        if (from != built) notes_.push_back(key + ": not drawn by this build, the committed figure is shown");
         fs::create_directories((out_ / key).parent_path());
         fs::copy_file(from, out_ / key, fs::copy_options::overwrite_existing);
         ++figures_copied_;
@@ -263,7 +325,7 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
 // figures with numbered captions.
 std::string Book::preprocess(const Page& page) {
     auto lines = prose::read_lines(page.source);
-    page_values_ = 0;
+    page_values_ = page_unmeasured_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
     const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
     std::string md;
@@ -295,9 +357,15 @@ std::string Book::preprocess(const Page& page) {
             ++figure;
             const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure)
                                                     : std::to_string(figure);
+            // A figure this build should have drawn but did not: the committed one is shown, and said so.
+            const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
+            std::string whose;
+            if (key.rfind("figures/", 0) == 0 && fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures") &&
+                !fs::exists(figures_ / key.substr(8)))
+                whose = " <em>(Drawn by the reference solution: this build has not drawn it.)</em>";
             md += "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
                   html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
-                  "</figcaption>\n</figure>\n";
+                  whose + "</figcaption>\n</figure>\n";
             continue;
         }
         auto markers = prose::find_value_markers(line);
@@ -316,10 +384,8 @@ std::string Book::preprocess(const Page& page) {
                             html_escape(*text) + "</span>";
                 } else {
                     ++values_unmeasured_;
-                    const std::string scene = v->path.substr(0, v->path.find('.'));
-                    (strict_ ? problems_ : notes_)
-                        .push_back(where + ": value '" + v->path + "': this build has no report " +
-                                   (values_.dir() / (scene + ".json")).string() + "; the committed value is shown");
+                    ++page_unmeasured_;
+                    ++unmeasured_by_scene_[v->path.substr(0, v->path.find_first_of(".["))];
                     shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v->path) +
                             ": not measured by this build; the value committed with the text\">" + v->text + "</span>";
                 }
@@ -417,7 +483,8 @@ std::string Book::pandoc_command(const Page& page, const fs::path& in, const fs:
                       " --variable=root:" + shell_quote(up) + " --variable=book-title:" + shell_quote(html_escape(book_title_)) +
                       " --variable=page-kind:" + page.kind +
                       " --variable=source:" + shell_quote(html_escape(rel(page.source, root_))) +
-                      (page_values_ ? " --variable=label:" + shell_quote(html_escape(label_)) : std::string());
+                      (page_values_ ? " --variable=label:" + shell_quote(html_escape(label_)) : std::string()) +
+                      (page_unmeasured_ ? " --variable=unmeasured:yes" : std::string());
     if (page.kind == "chapter") cmd += " --toc --toc-depth=3";
     return cmd + " --output=" + shell_quote(out.string()) + " " + shell_quote(in.string());
 }
@@ -446,7 +513,7 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
 }
 
 void Book::render_code(const Page& page) {
-    page_values_ = 0;
+    page_values_ = page_unmeasured_ = 0;
     const std::string text = prose::read_text(page.source);
     std::size_t longest = 2, run_len = 0;
     for (char c : text) {
@@ -539,6 +606,11 @@ int Book::render() {
         if (!ids[file].count(id)) problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
     }
 
+    for (const auto& [scene, count] : unmeasured_by_scene_)
+        (strict_ ? problems_ : notes_)
+            .push_back("this build has no report " + (values_.dir() / (scene + ".json")).string() + ": " +
+                       std::to_string(count) + " value(s) of the scene " + scene +
+                       " show the text committed with the prose, marked as not measured");
     std::string list;
     for (const auto& p : pages_) list += p.file + "\t" + p.kind + "\t" + p.title + "\n";
     prose::write_text(out_ / "pages.txt", list);

@@ -3,7 +3,8 @@
 //   snippets --check        <root>        fail on a missing, stale or unused code snippet, or a
 //                                         malformed value marker (see prose.hpp for both)
 //   snippets --check-names  <root>        fail on prose that names code which does not exist:
-//                                         `identifiers_with_underscores` and `ns::names`, `test:`
+//                                         `identifiers_with_underscores` and `ns::names` (not
+//                                         std::, Eigen::, boost::, doctest::, gsl_), `test:`
 //                                         prefixes, `paths/to/files.cpp`, and the scenes, options
 //                                         and graders of the ```sh examples
 //   snippets --check-values <root> <dir>  fail on a value marker whose key the scenes'
@@ -183,6 +184,12 @@ Corpus read_corpus(const fs::path& root) {
     return c;
 }
 
+bool is_library_name(const std::string& t) {
+    for (const char* prefix : {"std::", "Eigen::", "boost::", "doctest::", "gsl_", "GSL_"})
+        if (t.rfind(prefix, 0) == 0) return true;
+    return false;
+}
+
 int check_names(const fs::path& root) {
     const auto tree = prose::scan_tree(root);
     const Corpus corpus = read_corpus(root);
@@ -248,6 +255,8 @@ int check_names(const fs::path& root) {
                         ++names;
                         if (!corpus.test_prefixes.count(t))
                             problems.push_back(where + ": no grader's test name starts with '" + t + ":'");
+                    } else if (is_library_name(t)) {
+                        continue;  // std::, Eigen::, GSL's gsl_...: not this workbook's code
                     } else if (t.find('_') != std::string::npos || t.find("::") != std::string::npos) {
                         ++names;
                         const std::string last = t.substr(t.rfind(':') == std::string::npos ? 0 : t.rfind(':') + 1);
