@@ -40,6 +40,13 @@ macro(workbook_find_dependencies)
   if(NOT GNUPLOT_EXECUTABLE)
     workbook_missing("The gnuplot program (draws every figure)" gnuplot-nox)
   endif()
+  # pandoc renders the book; without it everything else still builds and runs.
+  find_program(PANDOC_EXECUTABLE pandoc)
+  if(NOT PANDOC_EXECUTABLE)
+    message(WARNING "pandoc was not found, so the book cannot be rendered. Install it with "
+                    "sudo apt-get install pandoc (cmake/workbook does this itself).")
+    set(PANDOC_EXECUTABLE pandoc)
+  endif()
 endmacro()
 
 # ------------------------------------------------------------------------------------------
@@ -205,9 +212,12 @@ function(workbook_scene name)
   endforeach()
   add_test(NAME "scene: ${name}"
            COMMAND ${CMAKE_COMMAND} -DEXPECT=0 -DOUT=${smoke} -DFIGURES=${S_FIGURES}
+                   -DJSON=${CMAKE_BINARY_DIR}/smoke/reports/${name}.json
                    "-DCOMMAND=$<TARGET_FILE:${name}>|--json|--out|${smoke}${args}"
                    -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
-  set_tests_properties("scene: ${name}" PROPERTIES LABELS "scene;${chapter}" TIMEOUT 300)
+  # Its JSON report gives the book's tests the numbers the prose quotes.
+  set_tests_properties("scene: ${name}" PROPERTIES LABELS "scene;${chapter}" TIMEOUT 300
+                       FIXTURES_SETUP scene_reports)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_LIST "${chapter}|${name}|$<TARGET_FILE:${name}>${args}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_TARGETS ${name})
 endfunction()
@@ -262,13 +272,82 @@ function(workbook_main_job)
   else()
     set(figures "${CMAKE_BINARY_DIR}/figures")  # a student's figures never overwrite them
   endif()
+  set_property(GLOBAL PROPERTY WORKBOOK_FIGURES_DIR "${figures}")
+  # After the scenes, the book: rendered with the numbers and figures of this very run.
+  set(book "$<TARGET_FILE:book_tool>|--render|${WORKBOOK_ROOT}|--values|${CMAKE_BINARY_DIR}/report"
+           "--figures|${figures}|--out|${CMAKE_BINARY_DIR}/book|--pandoc|${PANDOC_EXECUTABLE}"
+           "--label|scenes run by cmake/workbook run on the ${WORKBOOK_IMPL} implementation")
+  string(REPLACE ";" "|" book "${book}")
   add_custom_target(workbook
     COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/scenes.txt
             -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report
-            -DIMPL=${WORKBOOK_IMPL} -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
-    DEPENDS ${scene_targets}
-    USES_TERMINAL
+            -DIMPL=${WORKBOOK_IMPL} "-DBOOK=${book}" -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
+    DEPENDS ${scene_targets} book_tool
+    USES_TERMINAL VERBATIM
     COMMENT "Running every scene: figures in ${figures}, report in ${CMAKE_BINARY_DIR}/report")
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The book (see cmake/tools/book.cpp and cmake/tools/snippets.cpp): the chapters rendered to
+# HTML in <build>/book, and the tests that keep the prose true to the code and the numbers.
+#   target book             render it again from the last run's reports (cmake/workbook run)
+#   target update-snippets  rewrite the code and the numbers quoted in the prose's sources
+function(workbook_book)
+  get_property(figures GLOBAL PROPERTY WORKBOOK_FIGURES_DIR)
+  set(root "${WORKBOOK_ROOT}")
+  set(reports "${CMAKE_BINARY_DIR}/smoke/reports")
+
+  add_executable(snippets "${root}/cmake/tools/snippets.cpp")
+  add_executable(book_tool "${root}/cmake/tools/book.cpp")
+  foreach(t snippets book_tool)
+    workbook_warnings(${t})
+    target_compile_options(${t} PRIVATE -O1)  # tools: quick to build, fast enough to run
+    set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
+  endforeach()
+
+  add_test(NAME "book: every code snippet in the prose matches its source"
+           COMMAND snippets --check "${root}")
+  add_test(NAME "book: the code the prose names exists"
+           COMMAND snippets --check-names "${root}")
+  add_test(NAME "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
+           COMMAND book_tool --check-structure "${root}")
+  add_test(NAME "book: every number in the prose names a value the scenes report"
+           COMMAND snippets --check-values "${root}" "${reports}")
+  add_test(NAME "book: renders to HTML with MathML, its figures and no broken link"
+           COMMAND book_tool --render "${root}" --values "${reports}" --figures "${figures}"
+                   --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}" --strict
+                   --label "scenes run by the test suite on the ${WORKBOOK_IMPL} implementation")
+  add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken"
+           COMMAND bash "${root}/cmake/book/browser_test.sh" "${CMAKE_BINARY_DIR}/book"
+                   "${CMAKE_BINARY_DIR}/book-test")
+  add_test(NAME "book: the checks fail on a chapter broken on purpose"
+           COMMAND ${CMAKE_COMMAND} -DSNIPPETS=$<TARGET_FILE:snippets> -DBOOK=$<TARGET_FILE:book_tool>
+                   -DPANDOC=${PANDOC_EXECUTABLE} -DWORK=${CMAKE_BINARY_DIR}/book-selftest
+                   -P "${root}/cmake/book/selftest.cmake")
+  set_tests_properties(
+    "book: every code snippet in the prose matches its source"
+    "book: the code the prose names exists"
+    "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
+    "book: every number in the prose names a value the scenes report"
+    "book: renders to HTML with MathML, its figures and no broken link"
+    "book: in a browser every image loads, the math is MathML, no link is broken"
+    "book: the checks fail on a chapter broken on purpose"
+    PROPERTIES LABELS book TIMEOUT 300)
+  set_tests_properties("book: every number in the prose names a value the scenes report"
+                       PROPERTIES FIXTURES_REQUIRED scene_reports)
+  set_tests_properties("book: renders to HTML with MathML, its figures and no broken link"
+                       PROPERTIES FIXTURES_REQUIRED scene_reports FIXTURES_SETUP book_html)
+  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken"
+                       PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77)
+
+  add_custom_target(update-snippets
+    COMMAND snippets --update "${root}" "${CMAKE_BINARY_DIR}/report"
+    COMMENT "Refreshing the code and the numbers quoted in the chapters (numbers: from the last cmake/workbook run)")
+  add_custom_target(book
+    COMMAND book_tool --render "${root}" --values "${CMAKE_BINARY_DIR}/report" --figures "${figures}"
+            --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}"
+            --label "the last cmake/workbook run on the ${WORKBOOK_IMPL} implementation"
+    COMMENT "Rendering the book from the last run's reports into ${CMAKE_BINARY_DIR}/book")
 endfunction()
 
 # The stub gate: every grading test passes on solutions/ and fails on the pristine stubs.
@@ -289,4 +368,7 @@ function(workbook_stub_gate)
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
                        LABELS "gate" WILL_FAIL TRUE)
+  # Both write stub_gate_<topic>_*.xml in the build folder: never at the same time.
+  set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
+                       "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_xml)
 endfunction()

@@ -4,6 +4,8 @@
 #   -DFIGURES=<dir>   figures go to <dir>/<chapter>/
 #   -DREPORT=<dir>
 #   -DIMPL=<which implementation the scenes were built from>
+#   -DBOOK=<exe>|<arg>|...  then render the book with this run's numbers (even when a scene
+#                     failed: its numbers are then marked as not measured)
 
 # Three significant digits of a JSON number, for the table.
 function(short_number value out)
@@ -35,6 +37,7 @@ foreach(line IN LISTS lines)
   string(REPLACE "|" ";" parts "${line}")
   list(POP_FRONT parts chapter name exe)
   message("[${i}/${total}] ${chapter}/${name}")
+  file(REMOVE "${REPORT}/${name}.json")  # no numbers of an earlier run for a scene that fails now
   execute_process(COMMAND "${exe}" --json --out "${FIGURES}/${chapter}" ${parts}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -73,7 +76,15 @@ file(WRITE "${REPORT}/scenes.json" "[\n${all}]\n")
 file(WRITE "${REPORT}/report.md" "${md}")
 message("\n${md}")
 message("Figures: ${FIGURES}\nReport:  ${REPORT}/report.md")
+if(BOOK)
+  string(REPLACE "|" ";" book "${BOOK}")
+  message("\nRendering the book")
+  execute_process(COMMAND ${book} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    list(APPEND failed "the book (exit ${rc})")
+  endif()
+endif()
 if(failed)
   list(JOIN failed "\n  " failed)
-  message(FATAL_ERROR "These scenes failed:\n  ${failed}")
+  message(FATAL_ERROR "These failed:\n  ${failed}")
 endif()

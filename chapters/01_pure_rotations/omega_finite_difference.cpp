@@ -109,6 +109,17 @@ int main(int argc, char** argv) {
         scene.report.table("by_stencil",
                            {"order", "evaluations", "best_h", "best_error", "predicted_h", "predicted_floor", "time_s"},
                            summary);
+        // What one more evaluation of R costs: the least-squares slope of the run time against
+        // the number of evaluations, over the central formulas (2, 4, 6, 8 evaluations).
+        double n_mean = 0, t_mean = 0, cov = 0, var = 0;
+        for (std::size_t s = 1; s < stencils.size(); ++s)
+            n_mean += double(stencils[s].offsets.size()), t_mean += time_per[s];
+        n_mean /= double(stencils.size() - 1), t_mean /= double(stencils.size() - 1);
+        for (std::size_t s = 1; s < stencils.size(); ++s) {
+            const double dn = double(stencils[s].offsets.size()) - n_mean;
+            cov += dn * (time_per[s] - t_mean), var += dn * dn;
+        }
+        scene.report.add("time_per_evaluation_s", cov / var, "run time of one more evaluation of R in a stencil");
         scene.report.table("sweep", {"h", "order1", "order2", "order4", "order6", "order8"}, rows, false);
         scene.report.note("central order 2: best step " + std::to_string(best_h[c2]) + ", theory eps^(1/3)/alpha = " +
                           std::to_string(std::cbrt(eps) / alpha));

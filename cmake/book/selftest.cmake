@@ -1,0 +1,133 @@
+# The book's checks must be able to fail. Builds a one-chapter workbook that is broken on
+# purpose, in every way the checks know, runs each check on it and requires that it fails and
+# names the damage.
+#   -DSNIPPETS=<exe> -DBOOK=<exe> -DPANDOC=<exe> -DWORK=<scratch folder>
+get_filename_component(ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
+set(tree "${WORK}/tree")
+file(REMOVE_RECURSE "${WORK}")
+file(COPY "${ROOT}/cmake/book/page.html" "${ROOT}/cmake/book/book.css" DESTINATION "${tree}/cmake/book")
+
+file(WRITE "${tree}/README.md" "# A workbook broken on purpose\n")
+file(WRITE "${tree}/chapters/README.md" "| 1 | [Mini](01_mini/README.md) |\n| 2 | [Bare](02_bare/README.md) |\n")
+file(WRITE "${tree}/chapters/02_bare/README.md"
+     "# Chapter 2. Bare\n\n**Before you start.** Chapter 1.\n\n## Errata\n\nNone.\n\n## 2.1 After the errata\n")
+file(WRITE "${tree}/exercises/rigid/mini.hpp" [=[
+// snippet: quoted
+int mini(int x);
+// end snippet
+// snippet: never_quoted
+int other(int x);
+// end snippet
+]=])
+file(WRITE "${tree}/chapters/errata.md" [=[
+| Chapter | Where in [P] | Printed | Corrected or qualified | Evidence |
+|---|---|---|---|---|
+| 9 | (1.1) | a | b | off by 1e-3 |
+| 1 | (1.2) | a | b | it looked wrong |
+| 1 | (1.3) | a | b |
+]=])
+file(WRITE "${tree}/tests/mini_test.cpp" "TEST_CASE(\"mini: doubles\") {}\n")
+file(WRITE "${tree}/chapters/01_mini/mini_scene.cpp" "opts.real(\"alpha\", 1.0, \"a frequency\");\n")
+file(WRITE "${tree}/reports/mini_scene.json" [=[
+{"scene": "mini_scene", "error": 1.5e-3, "run_time_s": 2e-6,
+ "by_case": {"columns": ["order", "error"], "rows": [[1, 0.5], [2, 0.25]]}}
+]=])
+file(WRITE "${tree}/chapters/01_mini/README.md" [=[
+# Chapter 1. Mini
+
+A chapter that does not say what to know first.
+
+## 1.1 Code
+
+<!-- snippet: quoted -->
+```cpp
+int mini(double x);
+```
+<!-- end snippet -->
+
+<!-- snippet: vanished -->
+```cpp
+int vanished();
+```
+<!-- end snippet -->
+
+It calls `renamed_function` from `exercises/rigid/gone.hpp`, graded by `nosuchtest:`.
+
+```sh
+build/solutions/scenes/mini_scene --alpha 1 --beta 2
+build/solutions/scenes/lost_scene
+```
+
+The error is <!-- value: mini_scene.no_such_key fmt=%.2g -->1e-3<!-- end value -->, the table
+gives <!-- value: mini_scene.by_case[order=3].error -->0.1<!-- end value -->, and a bad format
+<!-- value: mini_scene.error fmt=%q -->x<!-- end value -->; a good one
+<!-- value: mini_scene.by_case[order=2].error fmt=%.2f -->0.25<!-- end value -->.
+
+Math that pandoc cannot read: $\unknowncmd{x}$.
+
+![A figure that was never drawn.](../../figures/01_mini/none.svg)
+
+See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
+
+## 1.2 The end, without exercises
+
+## Exercises
+
+Do something, somewhere, and check it somehow.
+]=])
+
+set(failures "")
+# check(<name> <regex>... COMMAND <command...>): the command must fail and print every regex.
+function(check name)
+  cmake_parse_arguments(C "" "" "EXPECT;COMMAND" ${ARGN})
+  execute_process(COMMAND ${C_COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(all "${out}${err}")
+  if(rc EQUAL 0)
+    set(failures "${failures}\n${name}: passed on the broken chapter:\n${all}" PARENT_SCOPE)
+    return()
+  endif()
+  foreach(re IN LISTS C_EXPECT)
+    if(NOT all MATCHES "${re}")
+      set(failures "${failures}\n${name}: did not report /${re}/:\n${all}" PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  message(STATUS "${name}: fails as it should (exit ${rc})")
+endfunction()
+
+check("snippets --check"
+  EXPECT "snippet 'quoted' differs" "no source defines snippet 'vanished'"
+         "snippet 'never_quoted' is not quoted anywhere" "value 'mini_scene.error': fmt=%q"
+  COMMAND "${SNIPPETS}" --check "${tree}")
+check("snippets --check-names"
+  EXPECT "`renamed_function` does not occur" "`exercises/rigid/gone.hpp` does not exist"
+         "no grader's test name starts with 'nosuchtest:'" "mini_scene has no option --beta"
+         "runs the scene 'lost_scene'"
+  COMMAND "${SNIPPETS}" --check-names "${tree}")
+check("snippets --check-values"
+  EXPECT "has no key 'no_such_key'" "has no row with order = 3"
+  COMMAND "${SNIPPETS}" --check-values "${tree}" "${tree}/reports")
+check("book --check-structure"
+  EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section"
+         "do not say where to work" "do not show how to check the work" "its last section is '## 2.1"
+         "must name a chapter of the contents \\(1..2\\), not '9'" "this one has none" "has 4 cells"
+  COMMAND "${BOOK}" --check-structure "${tree}")
+check("book --render"
+  EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
+         "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
+  COMMAND "${BOOK}" --render "${tree}" --values "${tree}/reports" --figures "${tree}/figures"
+          --out "${WORK}/book" --pandoc "${PANDOC}" --strict)
+
+# And the one good value of the broken chapter is rendered as the report has it.
+if(EXISTS "${WORK}/book/01_mini.html")
+  file(READ "${WORK}/book/01_mini.html" html)
+  if(NOT html MATCHES "measured by this build\">0\\.25</span>")
+    set(failures "${failures}\nbook --render: the value by_case[order=2].error was not shown as 0.25")
+  endif()
+else()
+  set(failures "${failures}\nbook --render: rendered no page for the broken chapter")
+endif()
+
+if(failures)
+  message(FATAL_ERROR "The book's checks missed damage done on purpose:${failures}")
+endif()

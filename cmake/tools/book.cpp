@@ -1,0 +1,667 @@
+// Renders the book: the chapters' README.md files, the contents, the errata and the hints, as
+// HTML pages that work offline (pandoc, math as MathML, no script).
+//
+//   book --render <root> --values <dir> --figures <dir> --out <dir> [--pandoc <exe>]
+//        [--label <text>] [--strict]
+//   book --check-structure <root>
+//
+// --render: chapters/README.md is the table of contents; each row that links
+// (NN_slug/README.md) is a chapter, in that order. Pages: index.html (the contents),
+// NN_slug.html per chapter, errata.html, hints.html, workbook.html (the top README), any
+// other .md the pages link to, and code/<path>.html for each source file they link to.
+// Value markers show the values of the reports in --values (<scene>.json); without a report
+// of the scene the committed text stays, marked as not measured (--strict: an error). Figures
+// come from --figures (the folder the main job wrote them to), else from <root>/figures, and
+// are copied next to the pages. Every link is mapped to its page, and must exist, fragment
+// and all. Writes <out>/pages.txt for the browser test: file, kind, title per line.
+//
+// --check-structure: every chapter opens with "**Before you start.**" (what the reader
+// should know first), has an "## Errata" section and ends with an "## Exercises" section
+// that names the exercises/ file to work in and shows the command that checks the work.
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <ctime>
+#include <deque>
+#include <iostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "prose.hpp"
+
+namespace fs = std::filesystem;
+using prose::rel;
+
+namespace {
+
+std::string html_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+struct Output {
+    int status;
+    std::string text;
+};
+
+Output run(const std::string& command) {
+    Output o{0, ""};
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return {-1, "cannot run: " + command};
+    std::array<char, 4096> buf{};
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) o.text.append(buf.data(), n);
+    const int status = pclose(pipe);
+    o.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return o;
+}
+
+// The first "# Heading" of a markdown file, without markdown.
+std::string first_heading(const fs::path& md) {
+    bool in_fence = false;
+    for (const auto& l : prose::read_lines(md)) {
+        if (prose::is_fence(l)) in_fence = !in_fence;
+        if (in_fence || l.rfind("# ", 0) != 0) continue;
+        std::string t;
+        for (char c : l.substr(2))
+            if (c != '*' && c != '`' && c != '_') t += c;
+        return t;
+    }
+    return md.stem().string();
+}
+
+// The chapters, in the order of the table of contents.
+std::vector<std::string> chapter_list(const fs::path& root) {
+    const std::regex row(R"(\]\(([0-9][0-9]_[a-z0-9_]+)/README\.md\))");
+    std::vector<std::string> out;
+    for (const auto& l : prose::read_lines(root / "chapters" / "README.md")) {
+        std::smatch m;
+        if (std::regex_search(l, m, row)) out.push_back(m[1]);
+    }
+    return out;
+}
+
+// ------------------------------------------------------------------------------ structure
+
+int check_structure(const fs::path& root) {
+    std::vector<std::string> problems;
+    const auto chapters = chapter_list(root);
+    for (const auto& ch : chapters) {
+        const fs::path md = root / "chapters" / ch / "README.md";
+        const std::string name = "chapters/" + ch + "/README.md";
+        if (!fs::exists(md)) {
+            problems.push_back(name + ": missing (chapters/README.md links it)");
+            continue;
+        }
+        bool in_fence = false, before_first_h2 = true, knows_first = false, errata = false, title = false;
+        bool names_file = false, shows_command = false;  // in the last section
+        std::string last_h2;
+        for (const auto& l : prose::read_lines(md)) {
+            if (prose::is_fence(l)) {
+                if (!in_fence && l.find("sh") != std::string::npos) shows_command = true;
+                in_fence = !in_fence;
+            }
+            if (in_fence) continue;
+            if (l.rfind("# ", 0) == 0) title = true;
+            if (l.rfind("## ", 0) == 0) {
+                before_first_h2 = false;
+                last_h2 = l.substr(3);
+                if (last_h2.rfind("Errata", 0) == 0) errata = true;
+                names_file = shows_command = false;
+            }
+            if (l.find("exercises/") != std::string::npos) names_file = true;
+            if (before_first_h2 && l.find("**Before you start.**") != std::string::npos) knows_first = true;
+        }
+        if (!title) problems.push_back(name + ": no '# Chapter N. Title' heading");
+        if (!knows_first)
+            problems.push_back(name + ": does not open with '**Before you start.**' (what the reader should know first), "
+                               "before its first '## ' section");
+        if (!errata) problems.push_back(name + ": has no '## Errata' section (say what was checked in [P], even if nothing was wrong)");
+        if (last_h2.rfind("Exercises", 0) != 0) {
+            problems.push_back(name + ": its last section is '## " + last_h2 +
+                               "'; a chapter ends with '## Exercises' (what to implement, where, how to check it)");
+        } else {
+            if (!names_file) problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
+            if (!shows_command) problems.push_back(name + ": its Exercises do not show how to check the work (no ```sh block)");
+        }
+    }
+    // The errata list: each row names its chapter, the place in [P], what [P] prints, what the
+    // workbook uses instead, and the numbers that show it.
+    const fs::path errata = root / "chapters" / "errata.md";
+    int rows = 0;
+    if (fs::exists(errata)) {
+        const std::regex chapter_cell(R"(^\[?([0-9]+)\]?.*)");
+        int line_no = 0;
+        bool in_table = false;
+        for (const auto& l : prose::read_lines(errata)) {
+            ++line_no;
+            const std::string where = "chapters/errata.md:" + std::to_string(line_no);
+            if (l.rfind("|", 0) != 0) {
+                in_table = false;
+                continue;
+            }
+            if (!in_table) {  // the header row, then the |---| row
+                in_table = true;
+                continue;
+            }
+            if (l.find("---") != std::string::npos && l.find_first_not_of("|-: ") == std::string::npos) continue;
+            ++rows;
+            // Cells, split at each | that is not escaped (\|), as GitHub does (even in `code`).
+            std::vector<std::string> cells;
+            const std::string body = l.substr(1, l.size() - 1 - (l.back() == '|' ? 1 : 0));
+            std::string c;
+            for (std::size_t k = 0; k <= body.size(); ++k) {
+                if (k == body.size() || (body[k] == '|' && (k == 0 || body[k - 1] != '\\'))) {
+                    c.erase(0, c.find_first_not_of(' '));
+                    c.erase(c.find_last_not_of(' ') + 1);
+                    cells.push_back(c);
+                    c.clear();
+                } else {
+                    c += body[k];
+                }
+            }
+            if (cells.size() != 5) {
+                problems.push_back(where + ": an errata row has " + std::to_string(cells.size()) +
+                                   " cells; it needs 5 (chapter, where in [P], printed, corrected or qualified, evidence)");
+                continue;
+            }
+            std::smatch m;
+            if (!std::regex_match(cells[0], m, chapter_cell) || std::stoul(m[1]) < 1 || std::stoul(m[1]) > chapters.size())
+                problems.push_back(where + ": the first cell must name a chapter of the contents (1.." +
+                                   std::to_string(chapters.size()) + "), not '" + cells[0] + "'");
+            for (std::size_t c = 1; c < 5; ++c)
+                if (cells[c].empty()) problems.push_back(where + ": an errata row with an empty cell " + std::to_string(c + 1));
+            if (cells[4].find_first_of("0123456789") == std::string::npos)
+                problems.push_back(where + ": the evidence of an erratum gives numbers; this one has none");
+        }
+    }
+    std::cout << chapters.size() << " chapters checked for 'Before you start', 'Errata' and a closing 'Exercises'; "
+              << rows << " rows of chapters/errata.md checked\n";
+    for (const auto& p : problems) std::cout << "  " << p << "\n";
+    return problems.empty() ? 0 : 1;
+}
+
+// ------------------------------------------------------------------------------ rendering
+
+struct Page {
+    std::string file;    // in the book: "01_pure_rotations.html", "code/exercises/rotation.cpp.html"
+    fs::path source;     // the markdown or source file it comes from (absolute)
+    std::string kind;    // contents | chapter | page | code
+    std::string title;   // for <title> and the navigation
+    int chapter = 0;     // 1.. for chapters
+};
+
+class Book {
+public:
+    Book(fs::path root, fs::path values, fs::path figures, fs::path out, std::string pandoc, std::string label, bool strict)
+        : root_(std::move(root)),
+          values_(std::move(values)),
+          figures_(std::move(figures)),
+          out_(std::move(out)),
+          pandoc_(std::move(pandoc)),
+          label_(std::move(label)),
+          strict_(strict) {}
+
+    int render();
+
+private:
+    std::string page_for(const fs::path& target);   // "" when not a page (yet)
+    std::string map_link(const Page& page, const std::string& url, std::vector<std::string>& problems);
+    std::string preprocess(const Page& page);
+    std::string rewrite_links(const Page& page, const std::string& html);
+    void render_markdown(const Page& page, const Page* prev, const Page* next);
+    void render_code(const Page& page);
+    std::string pandoc_command(const Page& page, const fs::path& in, const fs::path& out, const std::string& from);
+
+    fs::path root_;
+    prose::Values values_;
+    fs::path figures_, out_;
+    std::string pandoc_, label_, book_title_;
+    bool strict_;
+    std::vector<Page> pages_;
+    std::map<std::string, std::size_t> by_source_;  // repo path -> index in pages_
+    std::map<std::string, prose::Snippet> snippets_;
+    std::vector<std::string> problems_, notes_;
+    std::vector<std::tuple<std::string, std::string, std::string, std::string>> fragments_;  // page, link, target, id
+    std::vector<std::string> index_lines(const std::vector<std::string>& contents);
+    int values_shown_ = 0, values_unmeasured_ = 0, figures_copied_ = 0, page_values_ = 0, page_unmeasured_ = 0;
+    std::map<std::string, int> unmeasured_by_scene_;  // scenes without a report: values shown as committed
+};
+
+// Path of `from` relative to the folder of the book page `page` ("" or "../").
+std::string up_to_root(const std::string& page_file) {
+    std::string up;
+    for (char c : page_file)
+        if (c == '/') up += "../";
+    return up;
+}
+
+std::string Book::page_for(const fs::path& target) {
+    const std::string key = rel(target, root_);
+    const auto it = by_source_.find(key);
+    if (it != by_source_.end()) return pages_[it->second].file;
+    const auto ext = target.extension().string();
+    const std::string name = target.filename().string();
+    if (ext == ".md") {  // another page of prose: render it too
+        std::string file = key.substr(0, key.size() - 3);
+        std::replace(file.begin(), file.end(), '/', '-');
+        pages_.push_back({file + ".html", target, "page", first_heading(target), 0});
+    } else if (ext == ".hpp" || ext == ".cpp" || ext == ".h" || ext == ".cmake" || ext == ".gp" || ext == ".sh" ||
+               name == "CMakeLists.txt" || key == "cmake/workbook" || key == ".ci/run") {
+        pages_.push_back({"code/" + key + ".html", target, "code", key, 0});
+    } else {
+        return "";
+    }
+    by_source_[key] = pages_.size() - 1;
+    return pages_.back().file;
+}
+
+// Maps a link of the prose (relative to its markdown file) to the book.
+std::string Book::map_link(const Page& page, const std::string& url, std::vector<std::string>& problems) {
+    if (!url.empty() && url[0] == '#') {  // an anchor of this page
+        if (url.size() > 1) fragments_.emplace_back(page.file, url, page.file, url.substr(1));
+        return url;
+    }
+    if (url.empty() || url.rfind("http://", 0) == 0 || url.rfind("https://", 0) == 0 ||
+        url.rfind("mailto:", 0) == 0 || url.rfind("data:", 0) == 0)
+        return url;
+    const auto hash = url.find('#');
+    const std::string path = url.substr(0, hash), fragment = hash == std::string::npos ? "" : url.substr(hash + 1);
+    const fs::path target = (page.source.parent_path() / path).lexically_normal();
+    const std::string key = rel(target, root_);
+    const std::string up = up_to_root(page.file);
+    if (key.rfind("..", 0) == 0) {
+        problems.push_back("links outside the workbook: " + url);
+        return url;
+    }
+    // A figure: from the build's figures, else the committed ones; copied next to the pages.
+    if (key.rfind("figures/", 0) == 0 && fs::path(key).extension() != ".gp") {
+        const fs::path built = figures_ / key.substr(8), committed = root_ / key;
+        const fs::path from = fs::exists(built) ? built : committed;
+        if (!fs::exists(from)) {
+            problems.push_back("the figure " + key + " does not exist (run: cmake/workbook run)");
+            return url;
+        }
+        if (from != built) notes_.push_back(key + ": not drawn by this build, the committed figure is shown");
+        fs::create_directories((out_ / key).parent_path());
+        fs::copy_file(from, out_ / key, fs::copy_options::overwrite_existing);
+        ++figures_copied_;
+        return up + key;
+    }
+    if (!fs::exists(target)) {
+        problems.push_back("broken link: " + url + " (" + key + " does not exist)");
+        return url;
+    }
+    if (fs::is_directory(target)) {
+        problems.push_back("links to the folder " + key + "/: link a file in it instead");
+        return url;
+    }
+    std::string file = page_for(target);
+    if (file.empty()) {  // any other file: copied as it is
+        file = "files/" + key;
+        fs::create_directories((out_ / file).parent_path());
+        fs::copy_file(target, out_ / file, fs::copy_options::overwrite_existing);
+    }
+    if (!fragment.empty()) fragments_.emplace_back(page.file, url, file, fragment);
+    return up + file + (fragment.empty() ? "" : "#" + fragment);
+}
+
+// The markdown pandoc sees: snippets named after their source, values of this build, and
+// figures with numbered captions.
+std::string Book::preprocess(const Page& page) {
+    auto lines = prose::read_lines(page.source);
+    page_values_ = page_unmeasured_ = 0;
+    if (page.kind == "contents") lines = index_lines(lines);
+    const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
+    std::string md;
+    bool in_fence = false;
+    int figure = 0;
+    const std::string where0 = rel(page.source, root_);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        std::string line = lines[i];
+        const std::string where = where0 + ":" + std::to_string(i + 1);
+        if (prose::is_fence(line)) in_fence = !in_fence;
+        if (in_fence || prose::is_fence(line)) {
+            md += line + "\n";
+            continue;
+        }
+        std::smatch m;
+        if (std::regex_match(line, m, prose::snippet_use_marker())) {
+            const auto s = snippets_.find(m[1]);
+            if (s == snippets_.end()) {
+                problems_.push_back(where + ": no source defines snippet '" + m[1].str() + "'");
+                continue;
+            }
+            const std::string link = fs::relative(root_ / s->second.file, page.source.parent_path()).generic_string();
+            md += "<p class=\"snippet-source\">From <a href=\"" + link + "#src-" + std::to_string(s->second.line + 1) +
+                  "\"><code>" + html_escape(s->second.file) + "</code></a></p>\n\n";
+            continue;
+        }
+        if (std::regex_match(line, prose::snippet_use_end())) continue;
+        if (std::regex_match(line, m, image)) {
+            ++figure;
+            const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure)
+                                                    : std::to_string(figure);
+            // A figure this build should have drawn but did not: the committed one is shown, and said so.
+            const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
+            std::string whose;
+            if (key.rfind("figures/", 0) == 0 && fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures") &&
+                !fs::exists(figures_ / key.substr(8)))
+                whose = " <em>(Drawn by the reference solution: this build has not drawn it.)</em>";
+            md += "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
+                  html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
+                  whose + "</figcaption>\n</figure>\n";
+            continue;
+        }
+        auto markers = prose::find_value_markers(line);
+        for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
+            std::string shown;
+            if (!v->error.empty()) {
+                problems_.push_back(where + ": value '" + v->path + "': " + v->error);
+                continue;
+            }
+            try {
+                const auto text = prose::resolve(*v, values_);
+                ++page_values_;
+                if (text) {
+                    ++values_shown_;
+                    shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", measured by this build\">" +
+                            html_escape(*text) + "</span>";
+                } else {
+                    ++values_unmeasured_;
+                    ++page_unmeasured_;
+                    ++unmeasured_by_scene_[v->path.substr(0, v->path.find_first_of(".["))];
+                    shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v->path) +
+                            ": not measured by this build; the value committed with the text\">" + v->text + "</span>";
+                }
+            } catch (const std::exception& e) {
+                problems_.push_back(where + ": value '" + v->path + "': " + e.what());
+                continue;
+            }
+            line.replace(v->begin, v->end - v->begin, shown);
+        }
+        md += line + "\n";
+    }
+    return md;
+}
+
+// The contents page opens the book: its title, the first paragraph of the top README (what
+// the book is about), a pointer to how to use it, then chapters/README.md under "Contents".
+std::vector<std::string> Book::index_lines(const std::vector<std::string>& contents) {
+    std::vector<std::string> out{"# " + book_title_, ""};
+    const auto top = prose::read_lines(root_ / "README.md");
+    std::size_t i = 0;
+    while (i < top.size() && top[i].rfind("# ", 0) != 0) ++i;
+    ++i;
+    while (i < top.size() && top[i].empty()) ++i;
+    const std::regex link(R"(\[([^\]]*)\]\([^)]*\))");  // its links point elsewhere: keep their words
+    std::string lead;
+    for (; i < top.size() && !top[i].empty() && top[i].rfind("#", 0) != 0; ++i)
+        lead += std::regex_replace(top[i], link, "$1") + "\n";
+    if (!lead.empty()) out.push_back("<div class=\"lead\">\n\n" + lead + "\n</div>\n");
+    out.push_back("New here? [Using the workbook](../README.md) has the two commands that build, run and test it, "
+                  "and how students, self-learners and instructors work with it.");
+    out.push_back("");
+    bool title_done = false;
+    for (const auto& l : contents) {
+        if (!title_done && l.rfind("# ", 0) == 0) {
+            out.push_back("#" + l);  // "# Contents" becomes a section of the opening page
+            title_done = true;
+        } else {
+            out.push_back(l);
+        }
+    }
+    return out;
+}
+
+// MathML that browsers draw better: pandoc writes the dot and double dot accents (\dot R,
+// \ddot R) as combining characters, which Chromium places badly; the spacing accents sit right.
+std::string better_accents(std::string html) {
+    const std::pair<std::string, std::string> swaps[] = {
+        {"<mo accent=\"true\">\u0307</mo>", "<mo accent=\"true\">\u02D9</mo>"},
+        {"<mo accent=\"true\">\u0308</mo>", "<mo accent=\"true\">\u00A8</mo>"},
+    };
+    for (const auto& [from, to] : swaps) {
+        std::string out;
+        std::size_t last = 0;
+        for (std::size_t p; (p = html.find(from, last)) != std::string::npos; last = p + from.size())
+            out += html.substr(last, p - last) + to;
+        html = out + html.substr(last);
+    }
+    return html;
+}
+
+std::string Book::rewrite_links(const Page& page, const std::string& html) {
+    // Only the page's own content: the template's navigation is already in book terms.
+    const auto begin = html.find("<main>"), end = html.rfind("</main>");
+    if (begin == std::string::npos || end == std::string::npos) {
+        problems_.push_back(page.file + ": the page template lost its <main>");
+        return html;
+    }
+    const std::string body = html.substr(begin, end - begin);
+    const std::regex attr(R"#(\b(href|src)="([^"]*)")#");
+    std::string out;
+    std::size_t last = 0;
+    std::vector<std::string> problems;
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), attr); it != std::sregex_iterator(); ++it) {
+        const auto& m = *it;
+        out += body.substr(last, static_cast<std::size_t>(m.position(0)) - last);
+        std::string url;  // pandoc writes & as &amp; in attributes
+        const std::string raw = m[2];
+        for (std::size_t k = 0; k < raw.size(); ++k) {
+            url += raw[k];
+            if (raw.compare(k, 5, "&amp;") == 0) k += 4;
+        }
+        out += m[1].str() + "=\"" + html_escape(map_link(page, url, problems)) + "\"";
+        last = static_cast<std::size_t>(m.position(0) + m.length(0));
+    }
+    out += body.substr(last);
+    for (const auto& p : problems) problems_.push_back(rel(page.source, root_) + ": " + p);
+    return html.substr(0, begin) + out + html.substr(end);
+}
+
+std::string Book::pandoc_command(const Page& page, const fs::path& in, const fs::path& out, const std::string& from) {
+    const std::string up = up_to_root(page.file);
+    std::string cmd = shell_quote(pandoc_) + " --from=" + from + " --to=html5 --mathml --standalone" +
+                      " --template=" + shell_quote((root_ / "cmake" / "book" / "page.html").string()) +
+                      " --metadata=pagetitle:" + shell_quote(page.title + " | " + book_title_) +
+                      " --variable=root:" + shell_quote(up) + " --variable=book-title:" + shell_quote(html_escape(book_title_)) +
+                      " --variable=page-kind:" + page.kind +
+                      " --variable=source:" + shell_quote(html_escape(rel(page.source, root_))) +
+                      (page_values_ ? " --variable=label:" + shell_quote(html_escape(label_)) : std::string()) +
+                      (page_unmeasured_ ? " --variable=unmeasured:yes" : std::string());
+    if (page.kind == "chapter") cmd += " --toc --toc-depth=3";
+    return cmd + " --output=" + shell_quote(out.string()) + " " + shell_quote(in.string());
+}
+
+void Book::render_markdown(const Page& page, const Page* prev, const Page* next) {
+    const fs::path tmp = out_ / ".work" / (page.file + ".md");
+    prose::write_text(tmp, preprocess(page));
+    std::string cmd = pandoc_command(page, tmp, out_ / ".work" / page.file, "gfm+tex_math_dollars+smart");
+    auto nav = [&](const std::string& name, const Page* p) {
+        if (p)
+            cmd += " --variable=" + name + "-url:" + shell_quote(up_to_root(page.file) + p->file) + " --variable=" +
+                   name + "-title:" + shell_quote(html_escape(p->title));
+    };
+    nav("prev", prev);
+    nav("next", next);
+    const Output o = run(cmd);
+    if (o.status != 0) {
+        problems_.push_back(rel(page.source, root_) + ": pandoc failed (" + std::to_string(o.status) + "): " + o.text);
+        return;
+    }
+    // pandoc renders math it cannot convert to MathML as TeX, with a warning: that is an error here.
+    std::istringstream warnings(o.text);
+    for (std::string w; std::getline(warnings, w);)
+        if (!w.empty()) problems_.push_back(rel(page.source, root_) + ": pandoc: " + w);
+    prose::write_text(out_ / page.file, better_accents(rewrite_links(page, prose::read_text(out_ / ".work" / page.file))));
+}
+
+void Book::render_code(const Page& page) {
+    page_values_ = page_unmeasured_ = 0;
+    const std::string text = prose::read_text(page.source);
+    std::size_t longest = 2, run_len = 0;
+    for (char c : text) {
+        run_len = c == '`' ? run_len + 1 : 0;
+        longest = std::max(longest, run_len);
+    }
+    const std::string fence(longest + 1, '`');
+    const std::string name = page.source.filename().string(), ext = page.source.extension().string();
+    std::string lang = "default";
+    if (ext == ".cpp" || ext == ".hpp" || ext == ".h") lang = "cpp";
+    else if (ext == ".cmake" || name == "CMakeLists.txt") lang = "cmake";
+    else if (ext == ".sh" || name == "workbook" || name == "run") lang = "bash";
+    std::string md = "# " + page.title + "\n\nThe file `" + page.title +
+                     "` as it is in the workbook's repository.\n\n" + fence + " {#src ." + lang + " .numberLines}\n" +
+                     text + (text.empty() || text.back() == '\n' ? "" : "\n") + fence + "\n";
+    const fs::path tmp = out_ / ".work" / (page.file + ".md");
+    prose::write_text(tmp, md);
+    fs::create_directories((out_ / page.file).parent_path());
+    const Output o = run(pandoc_command(page, tmp, out_ / page.file, "markdown-tex_math_dollars"));
+    if (o.status != 0) problems_.push_back(page.title + ": pandoc failed: " + o.text);
+}
+
+int Book::render() {
+    std::vector<std::string> problems;
+    snippets_ = prose::collect_snippets(root_, prose::scan_tree(root_).sources, problems);
+    for (const auto& p : problems) problems_.push_back(p);
+    book_title_ = first_heading(root_ / "README.md");
+    if (!label_.empty()) {
+        char when[64];
+        const std::time_t now = std::time(nullptr);
+        std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+        label_ += ", " + std::string(when);
+    }
+
+    // The fixed pages and the reading order: contents, chapters, errata, hints.
+    pages_.push_back({"index.html", root_ / "chapters" / "README.md", "contents", "Contents", 0});
+    int n = 0;
+    for (const auto& ch : chapter_list(root_)) {
+        const fs::path md = root_ / "chapters" / ch / "README.md";
+        if (!fs::exists(md)) {
+            problems_.push_back("chapters/README.md links " + ch + "/README.md, which does not exist");
+            continue;
+        }
+        pages_.push_back({ch + ".html", md, "chapter", first_heading(md), ++n});
+    }
+    for (const auto& [file, src] : {std::pair<std::string, std::string>{"errata.html", "chapters/errata.md"},
+                                    {"hints.html", "exercises/hints.md"}}) {
+        if (fs::exists(root_ / src)) pages_.push_back({file, root_ / src, "page", first_heading(root_ / src), 0});
+    }
+    const std::size_t reading_order = pages_.size();
+    pages_.push_back({"workbook.html", root_ / "README.md", "page", "How to use the workbook", 0});
+    for (std::size_t i = 0; i < pages_.size(); ++i) by_source_[rel(pages_[i].source, root_)] = i;
+
+    // Start from an empty folder, so that no page of an earlier render survives.
+    if (fs::exists(out_)) {
+        if (!fs::is_directory(out_) || (!fs::is_empty(out_) && !fs::exists(out_ / "pages.txt")))
+            throw std::runtime_error(out_.string() + " exists and is not a book rendered before: not touching it");
+        fs::remove_all(out_);
+    }
+    fs::create_directories(out_);
+    if (const Output v = run(shell_quote(pandoc_) + " --version"); v.status != 0)
+        throw std::runtime_error("cannot run pandoc ('" + pandoc_ + "'): install it with sudo apt-get install pandoc, "
+                                 "or run cmake/workbook, which does");
+    fs::copy_file(root_ / "cmake" / "book" / "book.css", out_ / "book.css", fs::copy_options::overwrite_existing);
+    // Pages found through links are appended while we go.
+    for (std::size_t i = 0; i < pages_.size(); ++i) {
+        const Page page = pages_[i];
+        if (page.kind == "code") {
+            render_code(page);
+            continue;
+        }
+        // Previous and next in reading order; the last page and the pages outside it lead
+        // back to the contents.
+        const Page* prev = i > 0 && i < reading_order ? &pages_[i - 1] : nullptr;
+        const Page* next = i + 1 < reading_order ? &pages_[i + 1] : (i > 0 ? &pages_[0] : nullptr);
+        const Page prev_copy = prev ? *prev : Page{}, next_copy = next ? *next : Page{};
+        render_markdown(page, prev ? &prev_copy : nullptr, next ? &next_copy : nullptr);
+    }
+
+    // Every link into a page must find its anchor there.
+    std::map<std::string, std::set<std::string>> ids;
+    const std::regex id_attr(R"#(\bid="([^"]+)")#");
+    for (const auto& [from, url, file, id] : fragments_) {
+        if (!ids.count(file)) {
+            const std::string html = fs::exists(out_ / file) ? prose::read_text(out_ / file) : "";
+            auto& s = ids[file];
+            for (auto it = std::sregex_iterator(html.begin(), html.end(), id_attr); it != std::sregex_iterator(); ++it)
+                s.insert((*it)[1]);
+        }
+        if (!ids[file].count(id)) problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
+    }
+
+    for (const auto& [scene, count] : unmeasured_by_scene_)
+        (strict_ ? problems_ : notes_)
+            .push_back("this build has no report " + (values_.dir() / (scene + ".json")).string() + ": " +
+                       std::to_string(count) + " value(s) of the scene " + scene +
+                       " show the text committed with the prose, marked as not measured");
+    std::string list;
+    for (const auto& p : pages_) list += p.file + "\t" + p.kind + "\t" + p.title + "\n";
+    prose::write_text(out_ / "pages.txt", list);
+    fs::remove_all(out_ / ".work");
+
+    std::cout << "book: " << pages_.size() << " pages (" << n << " chapters), " << figures_copied_ << " figures, "
+              << values_shown_ << " values from " << values_.dir().string();
+    if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured by this build";
+    std::cout << "\n      " << (out_ / "index.html").string() << "\n";
+    for (const auto& note : notes_) std::cout << "  note: " << note << "\n";
+    for (const auto& p : problems_) std::cout << "  " << p << "\n";
+    return problems_.empty() ? 0 : 1;
+}
+
+int usage() {
+    std::cerr << "usage: book --render <root> --values <dir> --figures <dir> --out <dir> [--pandoc <exe>] [--label <text>] [--strict]\n"
+                 "       book --check-structure <root>\n";
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.size() == 2 && args[0] == "--check-structure") return check_structure(fs::absolute(args[1]));
+        if (args.size() < 2 || args[0] != "--render") return usage();
+        std::map<std::string, std::string> opt{{"--pandoc", "pandoc"}};
+        bool strict = false;
+        for (std::size_t i = 2; i < args.size(); ++i) {
+            if (args[i] == "--strict") {
+                strict = true;
+            } else if (i + 1 < args.size() && (args[i] == "--values" || args[i] == "--figures" || args[i] == "--out" ||
+                                               args[i] == "--pandoc" || args[i] == "--label")) {
+                opt[args[i]] = args[i + 1];
+                ++i;
+            } else {
+                std::cerr << "book: unknown or incomplete option '" << args[i] << "'\n";
+                return usage();
+            }
+        }
+        for (const char* need : {"--values", "--figures", "--out"})
+            if (!opt.count(need)) {
+                std::cerr << "book: " << need << " is required\n";
+                return usage();
+            }
+        Book book(fs::absolute(args[1]), fs::absolute(opt["--values"]), fs::absolute(opt["--figures"]),
+                  fs::absolute(opt["--out"]), opt["--pandoc"], opt["--label"], strict);
+        return book.render();
+    } catch (const std::exception& e) {
+        std::cerr << "book: " << e.what() << "\n";
+        return 1;
+    }
+}

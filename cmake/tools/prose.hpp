@@ -1,0 +1,522 @@
+// What the book's tools share (snippets.cpp checks the prose, book.cpp renders it):
+// reading files, the code snippets of the sources, the value markers of the prose and the
+// scenes' JSON reports they are filled from.
+//
+// A code snippet, in a source file (exercises/rigid/*.hpp, chapters/**/*.cpp|hpp, tests/*):
+//     // snippet: NAME
+//     ...code...
+//     // end snippet
+// and where the prose quotes it (README.md, chapters/**/*.md, exercises/hints.md):
+//     <!-- snippet: NAME -->
+//     ```cpp
+//     ...code, filled in by `snippets --update`...
+//     ```
+//     <!-- end snippet -->
+//
+// A value, inline in the prose, filled from a scene's JSON report (report/<scene>.json):
+//     <!-- value: SCENE.KEY[.KEY|[ROW]|[COLUMN=X]]... [fmt=F] [scale=S] -->TEXT<!-- end value -->
+// TEXT is the value as last written into the source; the rendered book always shows the
+// value of the build's own run. KEY paths: `pure_rotation.error`, `pure_rotation.axis[2]`,
+// `omega_finite_difference.by_stencil[order=8].best_error` (a kit::Report table: the row whose
+// column `order` is 8, then its column `best_error`); `by_stencil[0].best_h` picks row 0.
+// F is a printf format for one number (%.2g, %.3e, %.0f, %d) or sciN: N significant digits
+// as 8.2×10⁻¹² (readable on GitHub and in the book alike). S multiplies first (1e9: s -> ns).
+// Markers inside code (fenced blocks, `code spans`) are text, not markers.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace prose {
+
+namespace fs = std::filesystem;
+
+inline std::vector<std::string> read_lines(const fs::path& p) {
+    std::ifstream in(p);
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    return lines;
+}
+
+inline std::string read_text(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline void write_text(const fs::path& p, const std::string& text) {
+    if (p.has_parent_path()) fs::create_directories(p.parent_path());
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + p.string());
+}
+
+inline std::string rel(const fs::path& p, const fs::path& root) { return fs::relative(p, root).generic_string(); }
+
+// ------------------------------------------------------------------------------ code
+
+// A line that opens or closes a fenced code block (``` or ~~~, up to 3 spaces indented).
+inline bool is_fence(const std::string& line) {
+    static const std::regex fence(R"(^ {0,3}(```|~~~).*$)");
+    return std::regex_match(line, fence);
+}
+
+// For each character of a line: is it inside a `code span`?
+inline std::vector<bool> code_span_mask(const std::string& line) {
+    std::vector<bool> mask(line.size(), false);
+    std::size_t i = 0;
+    while (i < line.size()) {
+        if (line[i] != '`') {
+            ++i;
+            continue;
+        }
+        std::size_t n = 0;
+        while (i + n < line.size() && line[i + n] == '`') ++n;
+        const std::string ticks(n, '`');
+        std::size_t close = line.find(ticks, i + n);
+        while (close != std::string::npos && close + n < line.size() && line[close + n] == '`')
+            close = line.find(ticks, close + n + 1);
+        if (close == std::string::npos) {
+            i += n;
+            continue;
+        }
+        for (std::size_t k = i; k < close + n; ++k) mask[k] = true;
+        i = close + n;
+    }
+    return mask;
+}
+
+// ------------------------------------------------------------------------------ snippets
+
+struct Snippet {
+    std::string name, file, text;  // file relative to the root; text dedented
+    int line = 0;                   // of the `// snippet:` line
+    bool used = false;
+};
+
+// Remove the indentation common to all non-blank lines.
+inline std::string dedent(const std::vector<std::string>& lines) {
+    std::size_t common = std::string::npos;
+    for (const auto& l : lines)
+        if (l.find_first_not_of(" \t") != std::string::npos) common = std::min(common, l.find_first_not_of(" \t"));
+    std::string out;
+    for (const auto& l : lines) out += (l.size() > common ? l.substr(common) : std::string()) + "\n";
+    return out;
+}
+
+// The files a workbook's prose and code live in. solutions/ is never scanned: the prose
+// must not give away the exercises.
+struct Tree {
+    std::vector<fs::path> sources;  // *.hpp, *.cpp
+    std::vector<fs::path> prose;    // *.md
+};
+
+inline Tree scan_tree(const fs::path& root) {
+    Tree t;
+    for (const char* dir : {"exercises", "chapters", "tests", "cmake"}) {
+        if (!fs::exists(root / dir)) continue;
+        for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
+            const auto ext = e.path().extension();
+            if (ext == ".hpp" || ext == ".cpp") t.sources.push_back(e.path());
+            if (ext == ".md") t.prose.push_back(e.path());
+        }
+    }
+    t.prose.push_back(root / "README.md");
+    std::sort(t.sources.begin(), t.sources.end());
+    std::sort(t.prose.begin(), t.prose.end());
+    return t;
+}
+
+// Collects the named regions of the sources; problems go to `problems`. The tools' own
+// sources (cmake/tools/) talk about the markers and are skipped.
+inline std::map<std::string, Snippet> collect_snippets(const fs::path& root, const std::vector<fs::path>& sources,
+                                                       std::vector<std::string>& problems) {
+    const std::regex begin_marker(R"(^\s*// snippet: ([A-Za-z0-9_]+)\s*$)");
+    const std::regex end_marker(R"(^\s*// end snippet\s*$)");
+    std::map<std::string, Snippet> snippets;
+    for (const auto& p : sources) {
+        if (rel(p, root).rfind("cmake/tools/", 0) == 0) continue;
+        const auto lines = read_lines(p);
+        std::string open;
+        int open_line = 0;
+        std::vector<std::string> body;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            std::smatch m;
+            const std::string where = rel(p, root) + ":" + std::to_string(i + 1);
+            if (std::regex_match(lines[i], m, begin_marker)) {
+                if (!open.empty()) problems.push_back(where + ": snippet '" + m[1].str() + "' opens inside '" + open + "'");
+                open = m[1];
+                open_line = static_cast<int>(i + 1);
+                body.clear();
+            } else if (std::regex_match(lines[i], end_marker)) {
+                if (open.empty()) {
+                    problems.push_back(where + ": 'end snippet' without a snippet");
+                    continue;
+                }
+                if (snippets.count(open))
+                    problems.push_back(rel(p, root) + ":" + std::to_string(open_line) + ": snippet '" + open +
+                                       "' is also defined in " + snippets[open].file);
+                snippets[open] = Snippet{open, rel(p, root), dedent(body), open_line, false};
+                open.clear();
+            } else if (!open.empty()) {
+                body.push_back(lines[i]);
+            }
+        }
+        if (!open.empty())
+            problems.push_back(rel(p, root) + ":" + std::to_string(open_line) + ": snippet '" + open + "' is never closed");
+    }
+    return snippets;
+}
+
+inline const std::regex& snippet_use_marker() {
+    static const std::regex r(R"(^<!-- snippet: ([A-Za-z0-9_]+) -->\s*$)");
+    return r;
+}
+inline const std::regex& snippet_use_end() {
+    static const std::regex r(R"(^<!-- end snippet -->\s*$)");
+    return r;
+}
+
+// ------------------------------------------------------------------------------ JSON
+
+// Just enough JSON for the scenes' reports (kit::Report::write_json).
+struct Json {
+    enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
+    bool boolean = false;
+    double number = 0;
+    std::string text;
+    std::vector<Json> items;                           // Array
+    std::vector<std::pair<std::string, Json>> fields;  // Object, in order
+
+    const Json* field(const std::string& key) const {
+        for (const auto& [k, v] : fields)
+            if (k == key) return &v;
+        return nullptr;
+    }
+};
+
+class JsonParser {
+public:
+    explicit JsonParser(const std::string& s) : s_(s) {}
+    Json parse() {
+        Json v = value();
+        space();
+        if (i_ != s_.size()) fail("trailing characters");
+        return v;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) {
+        throw std::runtime_error("JSON: " + what + " at character " + std::to_string(i_));
+    }
+    void space() {
+        while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+    }
+    bool take(char c) {
+        space();
+        if (i_ < s_.size() && s_[i_] == c) {
+            ++i_;
+            return true;
+        }
+        return false;
+    }
+    void expect(char c) {
+        if (!take(c)) fail(std::string("expected '") + c + "'");
+    }
+    std::string string_literal() {
+        expect('"');
+        std::string out;
+        while (i_ < s_.size() && s_[i_] != '"') {
+            char c = s_[i_++];
+            if (c != '\\') {
+                out += c;
+                continue;
+            }
+            if (i_ >= s_.size()) fail("unfinished escape");
+            c = s_[i_++];
+            switch (c) {
+                case 'n': out += '\n'; break;
+                case 't': out += '\t'; break;
+                case 'r': out += '\r'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'u': {
+                    if (i_ + 4 > s_.size()) fail("short \\u escape");
+                    const unsigned code = std::stoul(s_.substr(i_, 4), nullptr, 16);
+                    i_ += 4;
+                    if (code < 0x80) {
+                        out += static_cast<char>(code);
+                    } else if (code < 0x800) {
+                        out += static_cast<char>(0xC0 | (code >> 6));
+                        out += static_cast<char>(0x80 | (code & 0x3F));
+                    } else {
+                        out += static_cast<char>(0xE0 | (code >> 12));
+                        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+                        out += static_cast<char>(0x80 | (code & 0x3F));
+                    }
+                    break;
+                }
+                default: out += c;
+            }
+        }
+        expect('"');
+        return out;
+    }
+    Json value() {
+        space();
+        if (i_ >= s_.size()) fail("unexpected end");
+        Json v;
+        const char c = s_[i_];
+        if (c == '{') {
+            ++i_;
+            v.kind = Json::Object;
+            if (take('}')) return v;
+            do {
+                space();
+                std::string key = string_literal();
+                expect(':');
+                v.fields.emplace_back(std::move(key), value());
+            } while (take(','));
+            expect('}');
+        } else if (c == '[') {
+            ++i_;
+            v.kind = Json::Array;
+            if (take(']')) return v;
+            do v.items.push_back(value());
+            while (take(','));
+            expect(']');
+        } else if (c == '"') {
+            v.kind = Json::String;
+            v.text = string_literal();
+        } else if (s_.compare(i_, 4, "true") == 0) {
+            v.kind = Json::Bool, v.boolean = true, i_ += 4;
+        } else if (s_.compare(i_, 5, "false") == 0) {
+            v.kind = Json::Bool, i_ += 5;
+        } else if (s_.compare(i_, 4, "null") == 0) {
+            i_ += 4;
+        } else {
+            const char* begin = s_.c_str() + i_;
+            char* end = nullptr;
+            v.kind = Json::Number;
+            v.number = std::strtod(begin, &end);
+            if (end == begin) fail("not a value");
+            i_ += static_cast<std::size_t>(end - begin);
+        }
+        return v;
+    }
+    const std::string& s_;
+    std::size_t i_ = 0;
+};
+
+// ------------------------------------------------------------------------------ values
+
+struct ValueMarker {
+    std::size_t begin = 0, end = 0;  // the whole marker in the line: [begin, end)
+    std::size_t text_begin = 0, text_end = 0;
+    std::string path, fmt = "%.3g", text;
+    double scale = 1;
+    std::string error;  // a malformed marker says why
+};
+
+// The value markers of one line (outside code spans).
+inline std::vector<ValueMarker> find_value_markers(const std::string& line) {
+    static const std::regex open_re(R"(<!-- value: ([^ ]+)((?: [a-z]+=[^ ]+)*) -->)");
+    static const std::string close = "<!-- end value -->";
+    std::vector<ValueMarker> out;
+    const auto mask = code_span_mask(line);
+    auto it = std::sregex_iterator(line.begin(), line.end(), open_re);
+    for (; it != std::sregex_iterator(); ++it) {
+        const auto& m = *it;
+        const auto pos = static_cast<std::size_t>(m.position(0));
+        if (mask[pos]) continue;
+        ValueMarker v;
+        v.begin = pos;
+        v.path = m[1];
+        v.text_begin = pos + static_cast<std::size_t>(m.length(0));
+        const auto close_pos = line.find(close, v.text_begin);
+        if (close_pos == std::string::npos) {
+            v.error = "'<!-- value: " + v.path + " ... -->' has no '" + close + "' on the same line";
+            v.end = v.text_begin;
+            v.text_end = v.text_begin;
+            out.push_back(v);
+            continue;
+        }
+        v.text_end = close_pos;
+        v.end = close_pos + close.size();
+        v.text = line.substr(v.text_begin, v.text_end - v.text_begin);
+        std::istringstream opts(m[2].str());
+        for (std::string opt; opts >> opt;) {
+            const auto eq = opt.find('=');
+            const std::string key = opt.substr(0, eq), val = opt.substr(eq + 1);
+            if (key == "fmt") {
+                static const std::regex ok(R"(%[-+ 0#]*[0-9]*(\.[0-9]+)?[eEfFgGd]|sci[1-9])");
+                if (!std::regex_match(val, ok))
+                    v.error = "fmt=" + val + ": use a printf format for one number (%.2g, %.3e, %.0f, %d) or sci1..sci9";
+                v.fmt = val;
+            } else if (key == "scale") {
+                char* end = nullptr;
+                v.scale = std::strtod(val.c_str(), &end);
+                if (end == val.c_str() || *end != '\0' || !std::isfinite(v.scale))
+                    v.error = "scale=" + val + ": not a number";
+            } else {
+                v.error = "unknown option '" + key + "' (known: fmt, scale)";
+            }
+        }
+        out.push_back(v);
+    }
+    return out;
+}
+
+// 8.2×10⁻¹² with `digits` significant digits.
+inline std::string sci(double x, int digits) {
+    if (x == 0) return "0";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*e", digits - 1, x);
+    std::string s = buf;
+    const auto e = s.find('e');
+    const std::string mantissa = s.substr(0, e);
+    const int exponent = std::stoi(s.substr(e + 1));
+    if (exponent == 0) return mantissa;
+    static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string power = exponent < 0 ? "⁻" : "";
+    for (char c : std::to_string(std::abs(exponent))) power += sup[c - '0'];
+    if (mantissa == "1" || mantissa == "-1") return (mantissa == "-1" ? "-" : "") + std::string("10") + power;
+    return mantissa + "×10" + power;
+}
+
+inline std::string format_number(double x, const std::string& fmt) {
+    if (fmt.rfind("sci", 0) == 0) return sci(x, fmt[3] - '0');
+    char buf[128];
+    if (fmt.back() == 'd')
+        std::snprintf(buf, sizeof buf, (fmt.substr(0, fmt.size() - 1) + "lld").c_str(), static_cast<long long>(std::llround(x)));
+    else
+        std::snprintf(buf, sizeof buf, fmt.c_str(), x);
+    return buf;
+}
+
+// The scenes' reports in one folder: <dir>/<scene>.json, read once each.
+class Values {
+public:
+    explicit Values(fs::path dir) : dir_(std::move(dir)) {}
+    const fs::path& dir() const { return dir_; }
+
+    // The report of a scene, or nullptr when this build has none.
+    const Json* scene(const std::string& name) {
+        auto it = cache_.find(name);
+        if (it != cache_.end()) return it->second.get();
+        std::unique_ptr<Json> j;
+        const fs::path p = dir_ / (name + ".json");
+        if (fs::exists(p)) {
+            try {
+                j = std::make_unique<Json>(JsonParser(read_text(p)).parse());
+            } catch (const std::exception& e) {
+                throw std::runtime_error(p.string() + ": " + e.what());
+            }
+        }
+        return (cache_[name] = std::move(j)).get();
+    }
+
+private:
+    fs::path dir_;
+    std::map<std::string, std::unique_ptr<Json>> cache_;
+};
+
+// Follows `path` (the part after the scene name) into a report. Throws saying what is missing.
+inline const Json& lookup(const Json& report, const std::string& path) {
+    static const std::regex step(
+        R"(^\.([A-Za-z_][A-Za-z0-9_]*)|^\[([0-9]+)\]|^\[([A-Za-z_][A-Za-z0-9_]*)=([^\]]+)\])");
+    const Json* node = &report;
+    const Json* row_columns = nullptr;  // set while node is a row of a table
+    std::string rest = path, done;
+    auto is_table = [](const Json* n) {
+        return n->kind == Json::Object && n->field("columns") && n->field("rows");
+    };
+    auto column = [](const Json* cols, const std::string& name) {
+        std::size_t c = 0;
+        while (c < cols->items.size() && cols->items[c].text != name) ++c;
+        return c;
+    };
+    while (!rest.empty()) {
+        std::smatch m;
+        if (!std::regex_search(rest, m, step)) throw std::runtime_error("cannot read the key path at '" + rest + "'");
+        const std::string at = done.empty() ? "the report" : "'" + done + "'";
+        if (m[1].matched) {  // .key: a field, or the cell of a table row
+            const std::string key = m[1];
+            if (row_columns) {
+                const std::size_t c = column(row_columns, key);
+                if (c >= row_columns->items.size() || c >= node->items.size())
+                    throw std::runtime_error(at + " has no column '" + key + "'");
+                node = &node->items[c];
+                row_columns = nullptr;
+            } else if (node->kind == Json::Object) {
+                const Json* next = node->field(key);
+                if (!next) {
+                    std::string known;
+                    for (const auto& f : node->fields) known += (known.empty() ? "" : ", ") + f.first;
+                    throw std::runtime_error(at + " has no key '" + key + "' (it has: " + known + ")");
+                }
+                node = next;
+            } else {
+                throw std::runtime_error(at + " is not an object, so it has no key '" + key + "'");
+            }
+        } else if (m[2].matched) {  // [i]: an item of a list, or row i of a table
+            const std::size_t i = std::stoul(m[2]);
+            const Json* cols = is_table(node) ? node->field("columns") : nullptr;
+            const Json* list = cols ? node->field("rows") : node;
+            if (row_columns || list->kind != Json::Array || i >= list->items.size())
+                throw std::runtime_error(at + " has no item [" + m[2].str() + "]");
+            node = &list->items[i];
+            row_columns = cols;
+        } else {  // [column=x]: the row of a table whose column equals x
+            if (row_columns || !is_table(node))
+                throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + m[3].str() +
+                                         "=" + m[4].str() + "]");
+            const Json* cols = node->field("columns");
+            const std::size_t c = column(cols, m[3]);
+            if (c == cols->items.size()) throw std::runtime_error(at + " has no column '" + m[3].str() + "'");
+            const std::string wanted = m[4];
+            char* end = nullptr;
+            const double x = std::strtod(wanted.c_str(), &end);
+            const Json* found = nullptr;
+            for (const auto& r : node->field("rows")->items)
+                if (c < r.items.size() && r.items[c].kind == Json::Number && r.items[c].number == x) found = &r;
+            if (!found || *end != '\0') throw std::runtime_error(at + " has no row with " + m[3].str() + " = " + m[4].str());
+            node = found;
+            row_columns = cols;
+        }
+        done += m[0].str();
+        rest = m.suffix();
+    }
+    if (row_columns) throw std::runtime_error("'" + done + "' is a whole table row: name a column, e.g. '.x'");
+    return *node;
+}
+
+// The text a marker shows for the value `path` (SCENE.KEY...) in `values`. Throws saying
+// what is missing; returns nullopt when this build has no report of the scene at all.
+inline std::optional<std::string> resolve(const ValueMarker& v, Values& values) {
+    const auto dot = v.path.find_first_of(".[");
+    if (dot == std::string::npos || v.path[dot] != '.')
+        throw std::runtime_error("'" + v.path + "': name a scene and a key, e.g. pure_rotation.error");
+    const std::string scene = v.path.substr(0, dot);
+    const Json* report = values.scene(scene);
+    if (!report) return std::nullopt;
+    const Json& x = lookup(*report, v.path.substr(dot));
+    if (x.kind == Json::Number) return format_number(v.scale * x.number, v.fmt);
+    if (x.kind == Json::String && v.scale == 1) return x.text;
+    throw std::runtime_error("'" + v.path + "' is " + (x.kind == Json::Null ? "null (not finite)" : "not a number"));
+}
+
+}  // namespace prose
