@@ -180,10 +180,18 @@ int check_structure(const fs::path& root) {
                                    " cells; it needs 5 (chapter, where in [P], printed, corrected or qualified, evidence)");
                 continue;
             }
+            // A chapter's number is the NN of its folder NN_slug, as in the contents.
             std::smatch m;
-            if (!std::regex_match(cells[0], m, chapter_cell) || std::stoul(m[1]) < 1 || std::stoul(m[1]) > chapters.size())
-                problems.push_back(where + ": the first cell must name a chapter of the contents (1.." +
-                                   std::to_string(chapters.size()) + "), not '" + cells[0] + "'");
+            bool known = false;
+            std::string numbers;
+            for (const auto& ch : chapters) {
+                const std::string n = std::to_string(std::stoul(ch.substr(0, 2)));
+                numbers += (numbers.empty() ? "" : ", ") + n;
+                if (std::regex_match(cells[0], m, chapter_cell) && m[1].str() == n) known = true;
+            }
+            if (!known)
+                problems.push_back(where + ": the first cell must name a chapter of the contents (" + numbers + "), not '" +
+                                   cells[0] + "'");
             for (std::size_t c = 1; c < 5; ++c)
                 if (cells[c].empty()) problems.push_back(where + ": an errata row with an empty cell " + std::to_string(c + 1));
             if (cells[4].find_first_of("0123456789") == std::string::npos)
