@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
         fig << "set title 'towards a principal axis (m -> 0)'\nset xlabel 'elliptic parameter m'\nset xrange [1e-13:1]\n"
                "plot '-' with linespoints ls 1 title 'plane, about the smallest axis', '-' with linespoints ls 2 title 'plane, about the largest axis', "
                "'-' with linespoints ls 3 title 'circle, about the smallest axis', '-' with linespoints ls 4 title 'circle, about the largest axis', "
-               "'-' with linespoints ls 7 title 'nearly symmetric body, circle (m ~ asymmetry)'\n";
+               "'-' with linespoints ls 7 title 'nearly symmetric body: circle residual'\n";
         std::vector<std::vector<double>> sym;
         for (const auto& r : sym_rows)
             if (r[1] > 0) sym.push_back({r[1], std::max(r[3], 1e-17)});  // the exactly symmetric body (m = 0) is in the table
