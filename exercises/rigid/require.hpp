@@ -48,4 +48,31 @@ inline Vec3 require_axis(const Vec3& a, const std::string& name) {
     return a / n;
 }
 
+// Principal moments of inertia I = (I1, I2, I3), in any order: each finite and > 0, and each
+// at most the sum of the other two (the triangle inequality of a real mass distribution;
+// equality is a flat body, and is allowed, with a relative slack of 8 ulp for rounding).
+inline void require_principal_moments(const Vec3& I, const std::string& name = "principal moments") {
+    for (int i = 0; i < 3; ++i) {
+        const std::string which = name + " I" + std::to_string(i + 1);
+        require_finite(I(i), which);
+        if (!(I(i) > 0)) {
+            std::ostringstream s;
+            s.precision(17);
+            s << which << " must be > 0, got " << I(i);
+            throw std::invalid_argument(s.str());
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        if (I(k) > (I(i) + I(j)) * (1 + 8 * 2.220446049250313e-16)) {
+            std::ostringstream s;
+            s.precision(17);
+            s << name << " " << describe(I) << " break the triangle inequality: I" << i + 1 << " + I" << j + 1
+              << " = " << I(i) + I(j) << " < I" << k + 1 << " = " << I(k)
+              << " (each moment must be at most the sum of the other two)";
+            throw std::invalid_argument(s.str());
+        }
+    }
+}
+
 }  // namespace rigid

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace {
 
 std::string decode(std::string s) {
@@ -75,8 +77,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; i += 3) {
         const std::string topic = argv[i];
         std::string p1, p2;
-        const auto ref = run(argv[i + 1], "stub_gate_" + topic + "_solutions.xml", p1);
-        const auto stub = run(argv[i + 2], "stub_gate_" + topic + "_stubs.xml", p2);
+        // Per-process file names: two gates running at once never share a report.
+        const std::string tag = "stub_gate_" + topic + "_" + std::to_string(getpid());
+        const auto ref = run(argv[i + 1], tag + "_solutions.xml", p1);
+        const auto stub = run(argv[i + 2], tag + "_stubs.xml", p2);
+        std::remove((tag + "_solutions.xml").c_str());
+        std::remove((tag + "_stubs.xml").c_str());
         if (!p1.empty()) problems.push_back(topic + ": solutions grader: " + p1);
         if (!p2.empty()) problems.push_back(topic + ": stubs grader: " + p2);
         if (ref.empty()) problems.push_back(topic + ": no grading tests ran");

@@ -1,0 +1,150 @@
+// Chapter 2 scene: the body angular velocity of a regular precession [P, (1.4)-(1.7)].
+//
+// Omega(t) is computed twice: from the closed form (1.5), and from R(t) alone by an
+// eighth-order central difference and (1.1.1). Along one period it checks what [P] says is
+// constant: |Omega|^2 (1.6) and (a, Omega) (1.7), and fits a plane and a circle to Omega(t).
+// Then it sweeps the angle between a and b and compares the measured |Omega|^2 with the
+// value (1.6) prints, (alpha + beta)^2, and with alpha^2 + beta^2 + 2 alpha beta (a, b).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "rigid/precession.hpp"
+#include "rigid/rotation.hpp"
+#include "scene.hpp"
+
+using rigid::Mat3;
+using rigid::RegularPrecession;
+using rigid::Vec3;
+
+namespace {
+
+// snippet: omega_from_rotations
+// Omega at t from R(t) alone: eighth-order central difference of R, then (1.1.1).
+Vec3 omega_from_rotations(const RegularPrecession& p, double t, double h) {
+    static const double w[4] = {4. / 5, -1. / 5, 4. / 105, -1. / 280};
+    Mat3 R_dot = Mat3::Zero();
+    for (int j = 1; j <= 4; ++j)
+        R_dot += w[j - 1] * (rigid::precession_rotation(p, t + j * h) - rigid::precession_rotation(p, t - j * h));
+    return rigid::body_angular_velocity(rigid::precession_rotation(p, t), R_dot / h);
+}
+// end snippet
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("omega_circle", "Chapter 2: Omega(t) of a regular precession, its circle, and (1.6)-(1.7)");
+    opts.vector("a", Vec3(0, 0, 1), "rotation vector a (normalised)", kit::nonzero_vector())
+        .vector("b", Vec3(std::sqrt(3.0) / 2, 0, 0.5), "precession vector b (normalised)", kit::nonzero_vector())
+        .real("alpha", 2.0, "rotation frequency alpha", kit::positive())
+        .real("beta", 1.0, "precession frequency beta", kit::positive())
+        .integer("samples", 200, "instants sampled over one period 2 pi / alpha", 8, 100000);
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const RegularPrecession p{o.vector("a").normalized(), o.real("alpha"), o.vector("b").normalized(), o.real("beta")};
+        const int samples = static_cast<int>(o.integer("samples"));
+        const double period = 2 * std::numbers::pi / p.alpha;
+        const double h = 0.02 / (p.alpha + p.beta);  // balanced for the eighth-order formula
+
+        std::vector<Vec3> closed(samples), fd(samples);
+        const double run_time = kit::min_time([&] {
+            for (int k = 0; k < samples; ++k) closed[k] = rigid::precession_body_angular_velocity(p, period * k / samples);
+            kit::keep(closed);
+        });
+        for (int k = 0; k < samples; ++k) fd[k] = omega_from_rotations(p, period * k / samples, h);
+
+        const double printed = (p.alpha + p.beta) * (p.alpha + p.beta);  // [P, (1.6)] as printed
+        const double w2 = rigid::precession_omega_squared(p);
+        const double axial = rigid::precession_axial_component(p);
+        const rigid::Circle c = rigid::precession_omega_circle(p);
+        double err = 0, w2_min = 1e300, w2_max = 0, ax_dev = 0, circ_dev = 0;
+        for (int k = 0; k < samples; ++k) {
+            const double scale = fd[k].norm();
+            err = std::max(err, (closed[k] - fd[k]).norm() / scale);
+            w2_min = std::min(w2_min, fd[k].squaredNorm());
+            w2_max = std::max(w2_max, fd[k].squaredNorm());
+            ax_dev = std::max(ax_dev, std::abs(p.a.dot(fd[k]) - axial));
+            const Vec3 d = fd[k] - c.centre;
+            circ_dev = std::max(circ_dev, std::hypot(d.dot(c.normal), (d - d.dot(c.normal) * c.normal).norm() - c.radius));
+        }
+        const rigid::CircleFit fit = rigid::fit_circle(fd);
+
+        scene.report.headline("max |Omega (1.5) - Omega from finite differences of R(t)| / |Omega| over one period", err,
+                              run_time / samples);
+        scene.report.add("a_dot_b", p.a.dot(p.b), "(a, b)");
+        scene.report.add("omega2_measured_min", w2_min, "min over t of |Omega_fd|^2");
+        scene.report.add("omega2_measured_max", w2_max, "max over t of |Omega_fd|^2");
+        scene.report.add("omega2_printed", printed, "(alpha + beta)^2, [P, (1.6)] as printed");
+        scene.report.add("omega2_corrected", w2, "alpha^2 + beta^2 + 2 alpha beta (a, b)");
+        scene.report.add("axial_component", axial, "alpha + beta (a, b), [P, (1.7)]");
+        scene.report.add("axial_deviation", ax_dev, "max |(a, Omega_fd) - (1.7)|");
+        scene.report.add("circle_radius", c.radius, "beta |a x b|");
+        scene.report.add("circle_deviation", circ_dev, "max distance of Omega_fd from the predicted circle");
+        scene.report.add("fit_plane_residual", fit.plane_residual, "best-fit plane, max distance");
+        scene.report.add("fit_circle_residual", fit.circle_residual, "best-fit circle, max radial miss");
+        scene.report.add("fit_normal_dot_a", std::abs(fit.circle.normal.dot(p.a)));
+
+        // The sweep over the angle between a and b: (1.6) printed against measured.
+        std::vector<std::vector<double>> sweep;
+        double worst_formula = 0;
+        for (int k = 0; k <= 36; ++k) {
+            const double theta = std::numbers::pi * k / 36;
+            const Vec3 u = p.a.unitOrthogonal();
+            const RegularPrecession q{p.a, p.alpha, std::cos(theta) * p.a + std::sin(theta) * u, p.beta};
+            double measured = 0;
+            for (double t : {0.0, 0.31 * period, 0.77 * period}) measured = std::max(measured, omega_from_rotations(q, t, h).squaredNorm());
+            const double formula = rigid::precession_omega_squared(q);
+            worst_formula = std::max(worst_formula, std::abs(formula - measured) / measured);
+            sweep.push_back({theta * 180 / std::numbers::pi, std::cos(theta), measured, formula, printed});
+        }
+        scene.report.add("sweep_worst_relative_miss", worst_formula, "max |corrected (1.6) - measured| / measured");
+        scene.report.table("omega2_vs_angle", {"angle_deg", "a_dot_b", "measured", "corrected", "printed"}, sweep, false);
+
+        kit::Figure fig(scene, "omega_circle.svg", 760, 700);
+        if (fig.enabled()) {
+            fig << "set view 62, 38, 0.95, 1.0\nset view equal xyz\nset xyplane 0\nset border 4095\nunset grid\n"
+                   "set xlabel '{/Symbol W}_1'\nset ylabel '{/Symbol W}_2'\nset zlabel '{/Symbol W}_3'\n"
+                   "set key at screen 0.01, 0.99 top left\n"
+                   "splot '-' with lines ls 7 lw 2.5 title 'axis a', '-' with lines ls 8 lw 1 title 'body cone (origin to {/Symbol W}(t))', "
+                   "'-' with lines ls 1 lw 2 title 'circle predicted from (1.5)-(1.7)', "
+                   "'-' with points ls 2 pt 7 ps 0.5 title '{/Symbol W}(t) from finite differences of R(t)'\n";
+            const double top = std::max(1.3 * axial, 1.0);
+            fig.data({{0, 0, 0}, {top * p.a.x(), top * p.a.y(), top * p.a.z()}});
+            std::vector<std::vector<double>> rays, circle, pts;
+            for (int k = 0; k < samples; k += std::max(1, samples / 24)) {
+                rays.push_back({0, 0, 0});
+                rays.push_back({fd[k].x(), fd[k].y(), fd[k].z()});
+                rays.push_back({});
+                rays.push_back({});
+            }
+            const Vec3 u = c.normal.unitOrthogonal(), v = c.normal.cross(u);
+            for (int k = 0; k <= 200; ++k) {
+                const double th = 2 * std::numbers::pi * k / 200;
+                const Vec3 x = c.centre + c.radius * (std::cos(th) * u + std::sin(th) * v);
+                circle.push_back({x.x(), x.y(), x.z()});
+            }
+            for (int k = 0; k < samples; k += std::max(1, samples / 60)) pts.push_back({fd[k].x(), fd[k].y(), fd[k].z()});
+            fig.data(rays).data(circle).data(pts);
+            fig.finish();
+        }
+
+        kit::Figure f2(scene, "omega_squared_vs_angle.svg");
+        f2 << "set title 'Is |{/Symbol W}|^2 = ({/Symbol a}+{/Symbol b})^2? [P, (1.6)] against direct evaluation'\n"
+              "set xlabel 'angle between a and b (degrees)'\nset ylabel '|{/Symbol W}|^2'\nset key bottom left\n"
+              "set xrange [0:180]\nset xtics 30\n"
+              "plot '-' using 1:2 with lines ls 9 lw 2 title '({/Symbol a}+{/Symbol b})^2, as printed in (1.6)', "
+              "'-' using 1:2 with lines ls 1 title '{/Symbol a}^2+{/Symbol b}^2+2{/Symbol ab}(a,b)', "
+              "'-' using 1:2 with points ls 2 pt 7 ps 0.6 title 'measured from R(t)'\n";
+        std::vector<std::vector<double>> pr, co, me;
+        for (const auto& r : sweep) {
+            pr.push_back({r[0], r[4]});
+            co.push_back({r[0], r[3]});
+            me.push_back({r[0], r[2]});
+        }
+        f2.data(pr).data(co).data(me);
+        f2.finish();
+    });
+}

@@ -1,0 +1,140 @@
+// Chapter 2 scene: the body cone rolling on the space cone, and the path of a body point, for
+// three regular precessions R(t) = R^b(beta t) R^a(alpha t) [P, (1.4)-(1.5)].
+//
+// The lab angular velocity omega(t) = R(t) Omega(t) sweeps the space cone about b; the body
+// cone (the cone of Omega(t) about a, carried by the body, i.e. R(t*) Omega(s) for all s)
+// touches it along omega(t*). The scene checks omega(t) against finite differences of R(t),
+// and the two constants of the space cone: |omega| and (b, omega) = beta + alpha (a, b).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "rigid/precession.hpp"
+#include "rigid/rotation.hpp"
+#include "scene.hpp"
+
+using rigid::Mat3;
+using rigid::RegularPrecession;
+using rigid::Vec3;
+
+namespace {
+
+// omega = vee(Rdot R^T) with an eighth-order central difference of R(t).
+Vec3 omega_fd(const RegularPrecession& p, double t, double h) {
+    static const double w[4] = {4. / 5, -1. / 5, 4. / 105, -1. / 280};
+    Mat3 R_dot = Mat3::Zero();
+    for (int j = 1; j <= 4; ++j)
+        R_dot += w[j - 1] * (rigid::precession_rotation(p, t + j * h) - rigid::precession_rotation(p, t - j * h));
+    return rigid::lab_angular_velocity(rigid::precession_rotation(p, t), R_dot / h);
+}
+
+std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("precession_cones", "Chapter 2: space and body cones, and a body point's path, for three precessions");
+    opts.real("angle1", 90, "case 1: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha1", 1.0, "case 1: rotation frequency alpha", kit::positive())
+        .real("beta1", 1.0, "case 1: precession frequency beta", kit::positive())
+        .real("angle2", 35, "case 2: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha2", 2.0, "case 2: rotation frequency alpha", kit::positive())
+        .real("beta2", 0.7, "case 2: precession frequency beta", kit::positive())
+        .real("angle3", 125, "case 3: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha3", 0.6, "case 3: rotation frequency alpha", kit::positive())
+        .real("beta3", 1.5, "case 3: precession frequency beta", kit::positive());
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const Vec3 b = Vec3::UnitZ();
+        std::vector<RegularPrecession> cases;
+        for (int c = 1; c <= 3; ++c) {
+            const double th = o.real("angle" + std::to_string(c)) * std::numbers::pi / 180;
+            cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), o.real("alpha" + std::to_string(c)), b,
+                             o.real("beta" + std::to_string(c))});
+        }
+        double err = 0, run_time = 0;
+        std::vector<std::vector<double>> summary;
+        kit::Figure fig(scene, "precession_cones.svg", 1200, 460);
+        if (fig.enabled())
+            fig << "set multiplot layout 1, 3 title 'Space cone (about b, fixed), body cone (about R(t*)a, carried by the body) "
+                   "and the path of a body point'\n"
+                   "set view 68, 30, 1.0, 1.25\nset view equal xyz\nset xyplane 0\nunset grid\nunset key\n"
+                   "set xtics 1\nset ytics 1\nset ztics 1\nset border 4095\n";
+        for (std::size_t c = 0; c < cases.size(); ++c) {
+            const RegularPrecession& p = cases[c];
+            const double Tb = 2 * std::numbers::pi / p.beta, Ta = 2 * std::numbers::pi / p.alpha;
+            const double h = 0.02 / (p.alpha + p.beta);
+            const int n = 240;
+            std::vector<Vec3> omega(n + 1);
+            run_time += kit::min_time([&] {
+                for (int k = 0; k <= n; ++k) omega[k] = rigid::precession_lab_angular_velocity(p, Tb * k / n);
+                kit::keep(omega);
+            }) / (n + 1);
+            const double axial = p.beta + p.alpha * p.a.dot(p.b), w2 = rigid::precession_omega_squared(p);
+            double e = 0, dev_axial = 0, dev_norm = 0;
+            for (int k = 0; k <= n; k += 4) {
+                const Vec3 ref = omega_fd(p, Tb * k / n, h);
+                e = std::max(e, (omega[k] - ref).norm() / ref.norm());
+                dev_axial = std::max(dev_axial, std::abs(p.b.dot(ref) - axial));
+                dev_norm = std::max(dev_norm, std::abs(ref.squaredNorm() - w2));
+            }
+            err = std::max(err, e);
+            const double t_star = 0.3 * Tb;
+            const Mat3 Rs = rigid::precession_rotation(p, t_star);
+            // Where the two cones touch: omega(t*) and R(t*) Omega(t*) must be the same vector.
+            const double touch =
+                (Rs * rigid::precession_body_angular_velocity(p, t_star) - rigid::precession_lab_angular_velocity(p, t_star)).norm();
+            const double ab = p.a.dot(p.b);
+            summary.push_back({std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta, e, dev_axial, dev_norm, touch});
+            if (!fig.enabled()) continue;
+
+            // Space cone: rays to omega(t) over one precession period, and its rim.
+            std::vector<std::vector<double>> space_rays, space_rim, body_rays, body_rim, path, contact;
+            for (int k = 0; k <= n; ++k) {
+                space_rim.push_back(row(omega[k]));
+                if (k % 12 == 0) {
+                    space_rays.push_back({0, 0, 0});
+                    space_rays.push_back(row(omega[k]));
+                    space_rays.push_back({});
+                    space_rays.push_back({});
+                }
+            }
+            // Body cone at t*: Omega(s) for one rotation period, carried by R(t*).
+            for (int k = 0; k <= n; ++k) {
+                const Vec3 x = Rs * rigid::precession_body_angular_velocity(p, Ta * k / n);
+                body_rim.push_back(row(x));
+                if (k % 12 == 0) {
+                    body_rays.push_back({0, 0, 0});
+                    body_rays.push_back(row(x));
+                    body_rays.push_back({});
+                    body_rays.push_back({});
+                }
+            }
+            // A body point on the unit sphere, off both axes, over several precession periods.
+            const Vec3 x0 = (p.a.unitOrthogonal() + 0.6 * p.a).normalized() * std::sqrt(w2);
+            for (int k = 0; k <= 600; ++k) path.push_back(row(rigid::precession_rotation(p, Tb * k / 600) * x0));
+            const Vec3 ws = rigid::precession_lab_angular_velocity(p, t_star);
+            contact = {{0, 0, 0}, row(ws)};
+            char title[160];
+            std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  {/Symbol a} = %.2g;  {/Symbol b} = %.2g",
+                          std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta);
+            fig << "set title " + kit::quoted(title) + "\n";
+            fig << "splot '-' with lines ls 8 lw 0.8, '-' with lines ls 1 lw 2, '-' with lines ls 6 lw 0.8, "
+                       "'-' with lines ls 2 lw 2, '-' with lines ls 3 lw 1, '-' with lines ls 7 lw 3\n";
+            fig.data(space_rays).data(space_rim).data(body_rays).data(body_rim).data(path).data(contact);
+        }
+        if (fig.enabled()) {
+            fig << "unset multiplot\n";
+            fig.finish();
+        }
+        scene.report.headline("max |omega (closed form) - omega from finite differences of R(t)| / |omega|, three cases",
+                              err, run_time / 3);
+        scene.report.table("cases", {"angle_ab_deg", "alpha", "beta", "omega_error", "b_dot_omega_dev", "omega2_dev", "cones_touch"},
+                           summary);
+        scene.report.note("figure: grey = space cone (rays to omega(t)), blue = its rim; light blue = body cone at t* = 0.3 "
+                          "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
+    });
+}

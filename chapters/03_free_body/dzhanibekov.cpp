@@ -1,0 +1,162 @@
+// Chapter 3 scene: the separatrix and the Dzhanibekov flip, the free body's extreme case.
+//
+// A spin about the middle axis, slightly perturbed, Omega0 = (delta, w, delta): the body flips
+// over and over; on the separatrix itself it flips once and never comes back [P, Sect. 3]. The
+// exact motion (Jacobi elliptic functions with m_c kept accurate) is the reference. The scene
+// shows the flips, the error growth of the student's RK4 and of rk8pd at each flip, and a
+// table of ever closer approaches to the separatrix (m_c down to ~1e-12): the reference's own
+// consistency, what GSL's gsl_sf_elljac_e(u, m) loses by forming 1 - m, and rk8pd's error.
+#include <gsl/gsl_sf_elljac.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "free_body_scene.hpp"
+#include "rigid/free_body_exact.hpp"
+#include "rigid/require.hpp"
+#include "scene.hpp"
+
+using rigid::Vec3;
+
+namespace {
+
+// The exact Omega(t), but with GSL's elljac(u, m): what happens when 1 - m is formed from m.
+Vec3 omega_with_gsl_elljac(const rigid::FreeBodyMotion& mo, double t) {
+    double sn, cn, dn;
+    gsl_sf_elljac_e(mo.u0 + mo.lambda * t, mo.m, &sn, &cn, &dn);
+    Vec3 w;
+    w(mo.p) = mo.amplitude(mo.p) * cn;
+    w(mo.q) = mo.amplitude(mo.q) * sn;
+    w(mo.s) = mo.amplitude(mo.s) * dn;
+    return w;
+}
+
+std::string short_number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("dzhanibekov", "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
+    opts.vector("I", Vec3(3, 4, 6), "principal moments (distinct; the middle one is the unstable axis)")
+        .real("spin", 10, "Omega about the middle axis", kit::positive())
+        .real("delta", 1e-3, "perturbation of the other two components", kit::positive())
+        .real("T", 20, "time span", kit::positive())
+        .real("h", 2e-3, "step of the student's RK4", kit::positive())
+        .real("tol", 1e-12, "rk8pd tolerance", kit::positive());
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const Vec3 I = o.vector("I");
+        try {
+            rigid::require_principal_moments(I, "--I");
+        } catch (const std::invalid_argument& e) {
+            throw kit::BadInput(e.what());
+        }
+        const auto [lo, mid, hi] = scene3::sorted_axes(I);
+        if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct");
+        const double spin = o.real("spin"), delta = o.real("delta"), T = o.real("T"), h = o.real("h"), tol = o.real("tol");
+        if (h > 0.1 * T) throw kit::BadInput("--h must be at most T / 10");
+        auto start = [&](double d, double ratio_hi) {
+            Vec3 w = Vec3::Zero();
+            w(mid) = spin;
+            w(lo) = d;
+            w(hi) = ratio_hi * d;
+            return w;
+        };
+
+        // 1. The flips: exact, rk8pd, the student's RK4; and the separatrix motion. On the
+        //    separatrix, I_lo (I_mid - I_lo) W_lo^2 = I_hi (I_hi - I_mid) W_hi^2.
+        const Vec3 w0 = start(delta, 1.0);
+        const auto exact = rigid::free_body_motion(I, w0);
+        const double ratio = std::sqrt(I(lo) * (I(mid) - I(lo)) / (I(hi) * (I(hi) - I(mid))));
+        // Of the two separatrix branches through this neighbourhood, take the one that flips forward in time.
+        auto sep = rigid::free_body_motion(I, start(delta, ratio));
+        if (rigid::free_body_exact_omega(sep, T)(mid) > 0) sep = rigid::free_body_motion(I, start(delta, -ratio));
+        const int n = 400;
+        const auto times = rigid::linspace(0, T, n);
+        scene3::Run r8, r4;
+        const double t8 = kit::min_time([&] { r8 = scene3::integrate(I, w0, times, "rk8pd", tol); }, 3);
+        const double t4 = kit::min_time([&] { r4 = scene3::integrate(I, w0, times, "rk4", h); }, 3);
+        std::vector<std::vector<double>> comps, err_rows;
+        double e8 = 0, e4 = 0;
+        for (int k = 0; k <= n; ++k) {
+            const Vec3 we = rigid::free_body_exact_omega(exact, times[k]);
+            const Vec3 ws = rigid::free_body_exact_omega(sep, times[k]);
+            const double a8 = (r8.Omega[k] - we).norm() / w0.norm(), a4 = (r4.Omega[k] - we).norm() / w0.norm();
+            e8 = std::max(e8, a8);
+            e4 = std::max(e4, a4);
+            comps.push_back({times[k], we(lo), we(mid), we(hi), ws(mid), r4.Omega[k](mid)});
+            err_rows.push_back({times[k], std::max(a8, 1e-18), std::max(a4, 1e-18)});
+        }
+        scene.report.headline("max |Omega_rk8pd - Omega_exact| / |Omega(0)| over [0, T] near the separatrix", e8, t8);
+        scene.report.add("m_c", exact.m_c, "complementary elliptic parameter of the default motion");
+        scene.report.add("period", exact.period, "of Omega(t): two flips");
+        scene.report.add("rk4_error", e4, "the student's RK4 at step h, same measure");
+        scene.report.add("rk4_run_time_s", t4);
+        scene.report.add("separatrix_m_c", sep.m_c, "the separatrix motion: m_c must be 0");
+
+        // 2. Ever closer to the separatrix.
+        std::vector<std::vector<double>> table;
+        double worst_ref = 0;
+        for (double d : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
+            const auto mo = rigid::free_body_motion(I, start(d, 1.0));
+            const double Tn = std::min(T, 0.75 * mo.period);  // past the first flip
+            // (a) The reference against itself: restart from Omega(Tn / 2).
+            const auto re = rigid::free_body_motion(I, rigid::free_body_exact_omega(mo, Tn / 2));
+            const double self = (rigid::free_body_exact_omega(re, Tn / 2) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+            worst_ref = std::max(worst_ref, self);
+            // (b) With GSL's elljac(u, m): 1 - m formed inside.
+            const double gsl_diff =
+                (omega_with_gsl_elljac(mo, Tn) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+            // (c) rk8pd against the reference at Tn.
+            const scene3::Run run = scene3::integrate(I, mo.Omega0, {0.0, Tn}, "rk8pd", 1e-14);
+            const double e = (run.Omega.back() - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+            table.push_back({d, mo.m_c, mo.period, Tn, self, gsl_diff, e, std::numeric_limits<double>::epsilon() / mo.m_c});
+        }
+        scene.report.add("reference_self_consistency", worst_ref, "max over the table of the restart difference / spin");
+        scene.report.table("approach", {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
+                           table);
+
+        kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
+        fig << "set title 'Spin about the middle axis, perturbed by delta: the body flips (exact motion)'\n"
+               "set xlabel 't'\nset ylabel '{/Symbol W}'\nset key outside right\nset yrange [-12:12]\n"
+               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component x 10', "
+               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
+               "'-' using 1:2 with lines ls 4 title 'largest-axis component x 10', "
+               "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
+               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
+        std::vector<std::vector<double>> c1, c2, c3, c4, c5;
+        for (std::size_t k = 0; k < comps.size(); ++k) {
+            const auto& c = comps[k];
+            c1.push_back({c[0], 10 * c[1]});
+            c2.push_back({c[0], c[2]});
+            c3.push_back({c[0], 10 * c[3]});
+            c4.push_back({c[0], c[4]});
+            if (k % 4 == 0) c5.push_back({c[0], c[5]});
+        }
+        fig.data(c1).data(c2).data(c3).data(c4).data(c5);
+        fig.finish();
+
+        kit::Figure fe(scene, "dzhanibekov_error.svg", 900, 480);
+        fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
+              "set xlabel 't'\nset ylabel '|{/Symbol W} - {/Symbol W}_{exact}| / |{/Symbol W}(0)|'\n"
+              "set logscale y\nset format y '10^{%L}'\nset key top left\n"
+              "plot '-' using 1:2 with lines ls 1 title " + kit::quoted("rk8pd, tol " + short_number(tol)) + ", "
+              "'-' using 1:2 with lines ls 2 title " + kit::quoted("student RK4, h = " + short_number(h)) + "\n";
+        std::vector<std::vector<double>> a, b;
+        for (const auto& r : err_rows) {
+            a.push_back({r[0], r[1]});
+            b.push_back({r[0], r[2]});
+        }
+        fe.data(a).data(b);
+        fe.finish();
+    });
+}

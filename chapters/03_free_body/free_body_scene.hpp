@@ -1,0 +1,70 @@
+// What the Chapter 3 scenes share: initial data on a chosen polhode, and one way to integrate
+// the student's free-body equations with either the student's RK4 or a GSL method.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "rigid/free_body.hpp"
+#include "rigid/integrators.hpp"
+#include "rigid/ode.hpp"
+
+namespace scene3 {
+
+using rigid::Mat3;
+using rigid::Vec3;
+using rigid::VecX;
+
+// The axes sorted by moment: lo, mid, hi.
+inline std::array<int, 3> sorted_axes(const Vec3& I) {
+    std::array<int, 3> o{0, 1, 2};
+    std::stable_sort(o.begin(), o.end(), [&](int x, int y) { return I(x) < I(y); });
+    return o;
+}
+
+// snippet: polhode_start
+// A point of the polhode with energy E and M^2 = 2 E D (I_lo <= D <= I_hi) where it crosses
+// the plane Omega_mid = 0: solve I_lo W_lo^2 + I_hi W_hi^2 = 2E, I_lo^2 W_lo^2 + I_hi^2 W_hi^2 = 2E D.
+inline Vec3 polhode_start(const Vec3& I, double E, double D) {
+    const auto [lo, mid, hi] = sorted_axes(I);
+    Vec3 w = Vec3::Zero();
+    w(lo) = std::sqrt(std::max(0.0, 2 * E * (I(hi) - D) / (I(lo) * (I(hi) - I(lo)))));
+    w(hi) = std::sqrt(std::max(0.0, 2 * E * (D - I(lo)) / (I(hi) * (I(hi) - I(lo)))));
+    (void)mid;
+    return w;
+}
+// end snippet
+
+// The trajectory of one integration, at the output times.
+struct Run {
+    std::vector<Vec3> Omega;
+    std::vector<Mat3> R;
+    long work = 0;  // right-hand side calls
+};
+
+// method: "rk4" = the student's integrate_rk4 with step h; anything else = that GSL method at tol.
+inline Run integrate(const Vec3& I, const Vec3& Omega0, const std::vector<double>& times, const std::string& method,
+                     double tol_or_h) {
+    Run run;
+    run.Omega.reserve(times.size());
+    run.R.reserve(times.size());
+    const rigid::OdeRhs f = rigid::free_body_equations(I);
+    const auto observe = [&](double, const VecX& y) {
+        const rigid::BodyState s = rigid::unpack(y);
+        run.Omega.push_back(s.Omega);
+        run.R.push_back(s.R);
+    };
+    const VecX y0 = rigid::pack({Omega0, Mat3::Identity()});
+    if (method == "rk4") {
+        run.work = 4 * rigid::integrate_rk4(f, y0, times, observe, tol_or_h);
+    } else {
+        run.work = rigid::integrate_gsl(f, y0, times, observe, {.method = method, .rel_tol = tol_or_h, .abs_tol = tol_or_h})
+                       .rhs_calls;
+    }
+    return run;
+}
+
+}  // namespace scene3
