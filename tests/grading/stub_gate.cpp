@@ -7,6 +7,8 @@
 // on a stub asserts nothing the student has to do; a test that fails on the reference is
 // wrong. Either is named, and the gate fails. So does a topic with no tests, a test present
 // in one binary only, or a test name that doctest's filters would misread.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -75,8 +77,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; i += 3) {
         const std::string topic = argv[i];
         std::string p1, p2;
-        const auto ref = run(argv[i + 1], "stub_gate_" + topic + "_solutions.xml", p1);
-        const auto stub = run(argv[i + 2], "stub_gate_" + topic + "_stubs.xml", p2);
+        // Named after this process: ctest runs the gate and its own check at the same time.
+        const std::string tag = std::to_string(getpid());
+        const auto ref = run(argv[i + 1], "stub_gate_" + topic + "_solutions." + tag + ".xml", p1);
+        const auto stub = run(argv[i + 2], "stub_gate_" + topic + "_stubs." + tag + ".xml", p2);
+        std::remove(("stub_gate_" + topic + "_solutions." + tag + ".xml").c_str());
+        std::remove(("stub_gate_" + topic + "_stubs." + tag + ".xml").c_str());
         if (!p1.empty()) problems.push_back(topic + ": solutions grader: " + p1);
         if (!p2.empty()) problems.push_back(topic + ": stubs grader: " + p2);
         if (ref.empty()) problems.push_back(topic + ": no grading tests ran");
