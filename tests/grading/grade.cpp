@@ -326,8 +326,6 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
             if (verdict.empty()) {
                 // Every test in its own process.
                 const std::string run_dir = work_dir + "/run";
-                // The report goes outside the test's working folder, where the harness alone writes.
-                const std::string xml_path = work_dir + "/logs/report.xml";
                 const std::string output_path = work_dir + "/logs/output.txt";
                 std::string file_filter = setup.root + "/" + topic.test_file;
                 if (file_filter.find_first_of(",*?[]\\") != std::string::npos)
@@ -335,13 +333,13 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
                 for (const auto& exercise : topic.exercises) {
                     if (!selection.exercise.empty() && exercise.name != selection.exercise) continue;
                     for (const auto& test : exercise.tests) {
-                        std::remove(xml_path.c_str());
                         remove_tree(run_dir);
                         make_dirs(run_dir);
+                        std::string xml;
                         const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=xml",
-                                                       "--out=" + xml_path, "--no-colors"},
-                                                      run_dir, output_path, options.test_limits);
-                        Run r = decide(setup, topic, test, t, read_file(xml_path), options);
+                                                       "--out=/dev/fd/3", "--no-colors"},
+                                                      run_dir, output_path, options.test_limits, &xml);
+                        Run r = decide(setup, topic, test, t, xml, options);
                         // An exercise whose body is still the stub's todo("<name>") is not started.
                         if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
                             r.not_started = true;
@@ -392,16 +390,20 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
     out += "  \"extra_data\": {\"student\": " + json_string(r.student) + ", \"max_score\": " + format_number(r.max_score) +
            ", \"harness\": " + json_string(harness_version) + ", \"fingerprint\": " + json_string(r.fingerprint) + "},\n";
     out += "  \"tests\": [";
+    std::string chapter;
+    int in_chapter = 0;
     for (std::size_t k = 0; k < r.tests.size(); ++k) {
         const TestResult& t = r.tests[k];
         const Chapter* c = find_chapter(setup, t.chapter);
+        in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
+        chapter = t.chapter;
         std::string text = t.verdict == "pass" ? "pass" : t.verdict + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
         out += k ? ",\n" : "\n";
         out += "    {\"name\": " + json_string(t.name) + ", \"score\": " + format_number(t.score) +
                ", \"max_score\": " + format_number(t.max_score) + ", \"status\": \"" +
                (t.verdict == "pass" ? "passed" : "failed") + "\",\n";
-        out += "     \"number\": " + json_string((c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(k + 1)) +
+        out += "     \"number\": " + json_string((c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)) +
                ", \"tags\": [" + json_string(t.chapter) + ", " + json_string(t.topic) + ", " + json_string(t.exercise) +
                "], \"visibility\": \"visible\",\n";
         out += "     \"output\": " + json_string(text) + ",\n";

@@ -56,9 +56,11 @@ struct Outcome {
     std::string error;    // why it could not start
 };
 
-// Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path.
+// Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. With a
+// report, the program also gets a pipe as file descriptor 3 (/dev/fd/3), read into *report
+// while it runs: outside the output limit, and in no file the program could name.
 Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits);
+                    const std::string& output_path, const Limits& limits, std::string* report = nullptr);
 std::string signal_name(int signal);
 
 // ---- what is graded (setup.cpp) ------------------------------------------------------------

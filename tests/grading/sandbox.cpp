@@ -2,6 +2,7 @@
 // whole group, rlimits on address space, CPU, file size, core files and (for tests) process
 // count, stdin from /dev/null, stdout and stderr into a file. Linux (Debian 12).
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -9,6 +10,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -60,7 +62,7 @@ std::string signal_name(int signal) {
 }
 
 Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits) {
+                    const std::string& output_path, const Limits& limits, std::string* report_text) {
     Outcome outcome;
     // Everything the child needs is prepared before fork.
     std::vector<char*> args;
@@ -82,6 +84,16 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
         outcome.error = std::string("pipe: ") + std::strerror(errno);
         return outcome;
     }
+    int channel[2] = {-1, -1};  // the report pipe, fd 3 in the child
+    if (report_text) {
+        report_text->clear();
+        if (pipe2(channel, O_CLOEXEC) != 0) {
+            outcome.error = std::string("pipe: ") + std::strerror(errno);
+            close(report[0]);
+            close(report[1]);
+            return outcome;
+        }
+    }
     const pid_t parent = getpid();
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = fork();
@@ -89,6 +101,7 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
         outcome.error = std::string("fork: ") + std::strerror(errno);
         close(report[0]);
         close(report[1]);
+        if (report_text) close(channel[0]), close(channel[1]);
         return outcome;
     }
     if (pid == 0) {
@@ -103,13 +116,16 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
             (void)!write(report[1], &e, sizeof e);
             _exit(127);
         }
+        // Both pipe ends the child keeps move above fd 10 first, out of the way of 0 to 3.
+        const int exec_report = fcntl(report[1], F_DUPFD_CLOEXEC, 10);
+        const int report_end = report_text ? fcntl(channel[1], F_DUPFD_CLOEXEC, 10) : -1;
         dup2(in, 0);
         dup2(out, 1);
         dup2(out, 2);
-        close(in);
-        close(out);
-        for (int fd = 3; fd < 1024; ++fd)
-            if (fd != report[1]) close(fd);
+        if (report_text) dup2(report_end, 3);  // without O_CLOEXEC: the program keeps it
+        for (int fd = 3 + (report_text ? 1 : 0); fd < 1024; ++fd)
+            if (fd != exec_report) close(fd);
+        report[1] = exec_report;
         for (int s = 1; s < NSIG; ++s) signal(s, SIG_DFL);
         sigset_t none;
         sigemptyset(&none);
@@ -126,6 +142,18 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
     }
     setpgid(pid, pid);
     close(report[1]);
+    if (report_text) {
+        close(channel[1]);
+        fcntl(channel[0], F_SETFL, O_NONBLOCK);
+    }
+    // What the program writes to fd 3, kept up to 64 MiB.
+    auto drain = [&]() {
+        if (!report_text) return;
+        char buffer[65536];
+        ssize_t n;
+        while ((n = read(channel[0], buffer, sizeof buffer)) > 0)
+            if (report_text->size() < (64u << 20)) report_text->append(buffer, static_cast<std::size_t>(n));
+    };
     int exec_errno = 0;
     const bool exec_failed = read(report[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
     close(report[0]);
@@ -144,10 +172,20 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
             break;
         }
-        std::this_thread::sleep_for(pause);
+        if (report_text) {
+            pollfd p{channel[0], POLLIN, 0};
+            poll(&p, 1, static_cast<int>(std::max<long>(1, pause.count() / 1000)));
+            drain();
+        } else {
+            std::this_thread::sleep_for(pause);
+        }
         pause = std::min(pause * 2, std::chrono::microseconds(10000));
     }
     kill(-pid, SIGKILL);  // anything it left behind in its group
+    if (report_text) {
+        drain();
+        close(channel[0]);
+    }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (exec_failed) {
         outcome.error = "cannot run " + argv[0] + ": " + std::strerror(exec_errno);

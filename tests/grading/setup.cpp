@@ -175,7 +175,8 @@ std::string compile_template(const std::string& compile_commands, const std::vec
                 out.clear();
                 return "the compile command of " + file + " in " + compile_commands + " has no -c or -o";
             }
-            out.push_back("-fdiagnostics-color=never");
+            out.push_back("-fdiagnostics-color=never");  // diagnostics only: the code is compiled as in the build
+            out.push_back("-fmax-errors=20");
             return {};
         }
     }

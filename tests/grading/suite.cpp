@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
     }
 
     const std::string options = " -j " + std::to_string(jobs) + " --timeout " + timeout +
-                                " --memory 512 --output-limit 256 --max-file-size " + std::to_string(max_file_kb);
+                                " --memory 512 --max-file-size " + std::to_string(max_file_kb);
     const std::string grade = quote(harness) + " grade --setup " + quote(setup_dir) + " " + quote(subs) + " ";
     std::printf("== Grading %d bad and good submissions\n", n);
     std::fflush(stdout);
@@ -239,6 +239,26 @@ int main(int argc, char** argv) {
         for (const char* ext : {".json", ".tsv"})
             if (!same_file(out + "/results/" + s + ext, out2 + "/results/" + s + ext))
                 problems.push_back(s + ext + " differs between two runs");
+
+    // The student's check reaches the same verdicts as the instructor's run.
+    for (const auto& [student, c] : case_of) {
+        if (c->name != "partial") continue;
+        std::printf("== The student's check of %s\n", student.c_str());
+        std::fflush(stdout);
+        const std::string check_out = work + "/check";
+        std::system((quote(harness) + " check --setup " + quote(setup_dir) + " --folder " +
+                     quote(subs + "/" + student + "/exercises") + " --out " + quote(check_out) + options + " > " +
+                     quote(work + "/check.txt"))
+                        .c_str());
+        const std::string mine = read_file(check_out + "/results.json"), theirs = read_file(out + "/results/" + student + ".json");
+        const auto from_mine = mine.find("\"tests\": ["), from_theirs = theirs.find("\"tests\": [");
+        if (from_mine == std::string::npos || from_theirs == std::string::npos ||
+            mine.substr(from_mine) != theirs.substr(from_theirs))
+            problems.push_back(student + ": the student's check and the grading run disagree");
+        if (read_file(work + "/check.txt").find("Chapter 1, ") == std::string::npos)
+            problems.push_back(student + ": the check printed no progress: " + read_file(work + "/check.txt"));
+        break;
+    }
 
     // The table, and the time per submission.
     std::printf("\n| Submission | What it does | Exercise | Expected | Got | Tests | Score |\n|---|---|---|---|---|---:|---:|\n");

@@ -33,7 +33,7 @@ namespace {
 const char* usage =
     "usage:\n"
     "  workbook_grade grade --setup <build>/grading <submissions-folder> <out-folder> [options]\n"
-    "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [chapter|topic|exercise] [options]\n"
+    "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [--out <folder>] [chapter|topic|exercise] [options]\n"
     "  workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>\n"
     "options:\n"
     "  -j <n>                 submissions graded at once (default: the number of cores)\n"
@@ -340,7 +340,7 @@ int check(const Args& a) {
     std::printf("Checking %s in %s with the graders (the instructor's grading run uses the same ones)\n", what.c_str(),
                 relative_to_root(setup, folder).c_str());
     std::fflush(stdout);
-    const std::string dir = setup.dir + "/check";
+    const std::string dir = a.out.empty() ? setup.dir + "/check" : absolute(a.out);
     make_dirs(dir);
     const auto files = collect_files(setup, a.options, folder);
     const SubmissionResult r = grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
