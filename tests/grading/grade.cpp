@@ -17,23 +17,7 @@ namespace grading {
 
 namespace {
 
-std::string decode_xml(std::string s) {
-    const std::pair<const char*, const char*> entities[] = {
-        {"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}};
-    for (const auto& [from, to] : entities) s = replace_all(s, from, to);
-    return s;
-}
-
-std::string attribute(const std::string& element, const std::string& name) {
-    const std::string key = " " + name + "=\"";
-    const auto p = element.find(key);
-    if (p == std::string::npos) return {};
-    const auto q = element.find('"', p + key.size());
-    if (q == std::string::npos) return {};
-    return decode_xml(element.substr(p + key.size(), q - p - key.size()));
-}
-
-// The text of the first <tag>...</tag> in xml[from, to), its lines trimmed.
+// The text of the first <tag>...</tag> in xml[from, to), decoded, without the indentation.
 std::string element_text(const std::string& xml, const std::string& tag, std::size_t from, std::size_t to,
                          std::size_t* after = nullptr) {
     const auto open = xml.find("<" + tag, from);
@@ -71,8 +55,8 @@ std::string failure_details(const Setup& setup, const std::string& xml, std::siz
         const std::string head = xml.substr(expression, xml.find('>', expression) - expression);
         const auto end = xml.find("</Expression>", expression);
         const std::size_t stop = end == std::string::npos ? to : end;
-        out += relative_to_root(setup, attribute(head, "filename")) + ":" + attribute(head, "line") + ": " +
-               attribute(head, "type") + "( " + element_text(xml, "Original", expression, stop) + " ) failed\n";
+        out += relative_to_root(setup, xml_attribute(head, "filename")) + ":" + xml_attribute(head, "line") + ": " +
+               xml_attribute(head, "type") + "( " + element_text(xml, "Original", expression, stop) + " ) failed\n";
         const std::string expanded = element_text(xml, "Expanded", expression, stop);
         if (!expanded.empty()) out += "  with values: " + expanded + "\n";
         const std::string thrown = element_text(xml, "Exception", expression, stop);
@@ -86,13 +70,13 @@ std::string failure_details(const Setup& setup, const std::string& xml, std::siz
         }
     } else if (exception != std::string::npos && exception < to) {
         const std::string head = xml.substr(exception, xml.find('>', exception) - exception);
-        out += std::string(attribute(head, "crash") == "true" ? "crashed: " : "threw an exception: ") +
+        out += std::string(xml_attribute(head, "crash") == "true" ? "crashed: " : "threw an exception: ") +
                element_text(xml, "Exception", exception, to) + "\n";
     }
     const auto overall = xml.find("<OverallResultsAsserts", from);
     if (overall != std::string::npos && overall < to) {
         const std::string head = xml.substr(overall, xml.find('>', overall) - overall);
-        const std::string failures = attribute(head, "failures");
+        const std::string failures = xml_attribute(head, "failures");
         if (!failures.empty() && failures != "0" && failures != "1")
             out += "(" + failures + " checks failed in this test; the first is shown)\n";
     }
@@ -169,11 +153,11 @@ Run decide(const Setup& setup, const Topic& topic, const Test& test,
         const auto head_end = xml.find('>', pos);
         if (head_end == std::string::npos) break;
         const std::string head = xml.substr(pos, head_end - pos);
-        if (attribute(head, "name") != test.name || attribute(head, "skipped") == "true") continue;
+        if (xml_attribute(head, "name") != test.name || xml_attribute(head, "skipped") == "true") continue;
         ++found;
         start = pos;
-        misplaced = attribute(head, "filename") != setup.root + "/" + topic.test_file ||
-                    attribute(head, "line") != std::to_string(test.line);
+        misplaced = xml_attribute(head, "filename") != setup.root + "/" + topic.test_file ||
+                    xml_attribute(head, "line") != std::to_string(test.line);
         end = xml.find("</TestCase>", pos);
         closed = false;
         if (end != std::string::npos) {
@@ -181,7 +165,7 @@ Run decide(const Setup& setup, const Topic& topic, const Test& test,
             if (overall != std::string::npos && overall < end) {
                 closed = true;
                 const std::string o_head = xml.substr(overall, xml.find('>', overall) - overall);
-                success = attribute(o_head, "test_case_success") == "true";
+                success = xml_attribute(o_head, "test_case_success") == "true";
             }
         }
     }

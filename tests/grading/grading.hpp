@@ -38,6 +38,8 @@ void remove_tree(const std::string& path);
 bool is_directory(const std::string& path);  // a real folder, not a symbolic link to one
 std::vector<std::string> list_dir(const std::string& path);  // sorted names, without . and ..
 std::vector<std::string> shell_split(const std::string& command);
+std::string decode_xml(std::string s);
+std::string xml_attribute(const std::string& element, const std::string& name);  // name="value" in a tag
 
 // ---- running a program under limits (sandbox.cpp) -----------------------------------------
 struct Limits {

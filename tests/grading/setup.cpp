@@ -13,21 +13,6 @@ namespace grading {
 
 namespace {
 
-std::string decode_xml(std::string s) {
-    const std::pair<const char*, const char*> entities[] = {
-        {"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}};
-    for (const auto& [from, to] : entities) s = replace_all(s, from, to);
-    return s;
-}
-
-std::string xml_attribute(const std::string& element, const std::string& name) {
-    const std::string key = " " + name + "=\"";
-    const auto p = element.find(key);
-    if (p == std::string::npos) return {};
-    const auto q = element.find('"', p + key.size());
-    return decode_xml(element.substr(p + key.size(), q - p - key.size()));
-}
-
 // ---- a small JSON reader, enough for compile_commands.json ----------------------------------
 struct Json {
     enum Kind { Null, String, Array, Object, Other } kind = Null;
