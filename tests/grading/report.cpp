@@ -216,8 +216,9 @@ bool print_check(const Setup& setup, const SubmissionResult& r, const std::strin
         std::printf("\nHint (exercises/hints.md, %s):\n", first->exercise.c_str());
         for (const auto& line : split(hint, '\n')) std::printf("  %s\n", line.c_str());
     }
-    std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", all_pass, all_total,
-                first->exercise.c_str());
+    if (all_total > 1)
+        std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", all_pass, all_total,
+                    first->exercise.c_str());
     return false;
 }
 
