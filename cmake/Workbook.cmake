@@ -4,6 +4,9 @@ include_guard(GLOBAL)
 
 get_filename_component(WORKBOOK_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
+# compile_commands.json: the grading run compiles a student's file with exactly these flags.
+set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
+
 # ------------------------------------------------------------------------------------------
 # Dependencies: each missing piece stops the configure step with the Debian package to install.
 macro(workbook_missing what package)
@@ -155,6 +158,13 @@ endfunction()
 # and grade_<topic>_stubs grade the reference and the pristine stubs.
 function(workbook_grader topic)
   cmake_parse_arguments(G "" "CHAPTER" "" ${ARGN})
+  # The test file is compiled once; every flavour, and the grading run, links these objects.
+  add_library(grade_${topic}_objects OBJECT "${WORKBOOK_ROOT}/tests/${topic}_test.cpp")
+  target_include_directories(grade_${topic}_objects PRIVATE "${WORKBOOK_ROOT}/tests"
+                             $<TARGET_PROPERTY:rigid_${topic},INTERFACE_INCLUDE_DIRECTORIES>)
+  target_link_libraries(grade_${topic}_objects PRIVATE doctest::doctest Eigen3::Eigen)
+  workbook_warnings(grade_${topic}_objects)
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_GRADER_LIST "${topic}|${G_CHAPTER}")
   foreach(flavour IN ITEMS "" _solutions _stubs)
     if(flavour STREQUAL "_solutions" AND WORKBOOK_IMPL STREQUAL "solutions")
       continue()  # grade_<topic> already is the reference
@@ -163,8 +173,7 @@ function(workbook_grader topic)
       continue()
     endif()
     set(exe grade_${topic}${flavour})
-    add_executable(${exe} "${WORKBOOK_ROOT}/tests/${topic}_test.cpp")
-    target_include_directories(${exe} PRIVATE "${WORKBOOK_ROOT}/tests")
+    add_executable(${exe} $<TARGET_OBJECTS:grade_${topic}_objects>)
     target_link_libraries(${exe} PRIVATE workbook_doctest_main rigid_${topic}${flavour} doctest::doctest)
     set_target_properties(${exe} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
     workbook_warnings(${exe})
@@ -372,4 +381,118 @@ function(workbook_stub_gate)
   # Both write stub_gate_<topic>_*.xml in the build folder: never at the same time.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
                        "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_xml)
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The grading run (tests/grading/): `cmake/workbook grade` and `cmake/workbook check`.
+#
+# Writes grading/topics.txt, the facts the harness needs about every topic that has graders:
+# its chapter, the grader's compiled test objects and the exact files to link a student's
+# object with (the doctest main and the reference libraries of its dependencies, with their
+# own libraries). The target `grading` builds all of it once, plus grading/manifest.txt (every
+# exercise and test, listed from the reference graders). Call once, after every topic,
+# provided library and grader is declared.
+
+# The files to link after a student's object, for the link interface of <items>: the closure
+# of their link libraries in link order (each library before the ones it needs).
+function(_workbook_link_closure out_files out_targets)
+  set(files "")
+  set(targets "")
+  set(stack ${ARGN})
+  set(steps 0)
+  while(stack)
+    list(POP_FRONT stack item)
+    math(EXPR steps "${steps} + 1")
+    if(steps GREATER 10000)
+      message(FATAL_ERROR "workbook_grading: the link libraries of ${ARGN} do not terminate")
+    endif()
+    if(item MATCHES "^\\$<LINK_ONLY:(.+)>$")
+      set(item "${CMAKE_MATCH_1}")
+    endif()
+    if(item STREQUAL "")
+      continue()
+    endif()
+    if(TARGET "${item}")
+      get_target_property(real "${item}" ALIASED_TARGET)
+      if(real)
+        set(item "${real}")
+      endif()
+      get_target_property(type "${item}" TYPE)
+      get_target_property(imported "${item}" IMPORTED)
+      if(type MATCHES "^(STATIC|SHARED|UNKNOWN)_LIBRARY$")
+        list(APPEND files "$<TARGET_LINKER_FILE:${item}>")
+      elseif(type STREQUAL "OBJECT_LIBRARY")
+        list(APPEND files "$<TARGET_OBJECTS:${item}>")
+      endif()
+      if(NOT imported AND NOT type STREQUAL "INTERFACE_LIBRARY")
+        list(APPEND targets "${item}")
+      endif()
+      get_target_property(next "${item}" INTERFACE_LINK_LIBRARIES)
+      if(next)
+        list(PREPEND stack ${next})
+      endif()
+    elseif(item MATCHES "^-" OR IS_ABSOLUTE "${item}" OR item MATCHES "^\\$<")
+      list(APPEND files "${item}")
+    else()
+      list(APPEND files "-l${item}")
+    endif()
+  endwhile()
+  # Keep the last occurrence of each: every library then comes after all that need it.
+  list(REVERSE files)
+  list(REMOVE_DUPLICATES files)
+  list(REVERSE files)
+  list(REMOVE_DUPLICATES targets)
+  set(${out_files} "${files}" PARENT_SCOPE)
+  set(${out_targets} "${targets}" PARENT_SCOPE)
+endfunction()
+
+function(workbook_grading)
+  get_property(graders GLOBAL PROPERTY WORKBOOK_GRADER_LIST)
+  set(dir "${CMAKE_BINARY_DIR}/grading")
+  string(TOUPPER "${CMAKE_BUILD_TYPE}" config)
+  set(facts "# Generated by CMake (workbook_grading in cmake/Workbook.cmake): the facts the grading run needs.\n")
+  string(APPEND facts "root\t${WORKBOOK_ROOT}\n")
+  string(APPEND facts "build\t${CMAKE_BINARY_DIR}\n")
+  string(APPEND facts "compiler\t${CMAKE_CXX_COMPILER}\n")
+  string(APPEND facts "nm\t${CMAKE_NM}\n")
+  string(APPEND facts "compile_commands\t${CMAKE_BINARY_DIR}/compile_commands.json\n")
+  string(APPEND facts "link_flags\t${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${config}} ${CMAKE_EXE_LINKER_FLAGS}\n")
+  set(references "")
+  set(needed workbook_doctest_main)
+  foreach(entry IN LISTS graders)
+    string(REPLACE "|" ";" entry "${entry}")
+    list(GET entry 0 topic)
+    list(GET entry 1 chapter)
+    if(TARGET grade_${topic}_solutions)
+      set(reference grade_${topic}_solutions)
+    else()
+      set(reference grade_${topic})
+    endif()
+    list(APPEND references ${reference})
+    get_target_property(interface rigid_${topic}_solutions INTERFACE_LINK_LIBRARIES)
+    if(NOT interface)
+      set(interface "")
+    endif()
+    _workbook_link_closure(files targets workbook_doctest_main ${interface})
+    list(APPEND needed grade_${topic}_objects ${targets})
+    string(APPEND facts "topic\t${topic}\t${chapter}\n")
+    string(APPEND facts "reference\t$<TARGET_FILE:${reference}>\n")
+    string(APPEND facts "objects\t$<JOIN:$<TARGET_OBJECTS:grade_${topic}_objects>,\t>\n")
+    string(APPEND facts "link")
+    foreach(f IN LISTS files)
+      string(APPEND facts "\t${f}")
+    endforeach()
+    string(APPEND facts "\n")
+  endforeach()
+  file(GENERATE OUTPUT "${dir}/topics.txt" CONTENT "${facts}")
+  set(points "${WORKBOOK_ROOT}/tests/grading/points.txt")
+  add_custom_command(OUTPUT "${dir}/manifest.txt"
+    COMMAND workbook_grade manifest --topics "${dir}/topics.txt" --points "${points}"
+            --out "${dir}/manifest.txt"
+    DEPENDS workbook_grade ${references} "${dir}/topics.txt" "${points}"
+            "${WORKBOOK_ROOT}/chapters/README.md"
+    COMMENT "Listing the graders' exercises and tests in grading/manifest.txt")
+  add_custom_target(grading ALL DEPENDS "${dir}/manifest.txt")
+  list(REMOVE_DUPLICATES needed)
+  add_dependencies(grading workbook_grade ${needed})
 endfunction()

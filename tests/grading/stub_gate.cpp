@@ -7,6 +7,8 @@
 // on a stub asserts nothing the student has to do; a test that fails on the reference is
 // wrong. Either is named, and the gate fails. So does a topic with no tests, a test present
 // in one binary only, or a test name that doctest's filters would misread.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -16,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 namespace {
 

@@ -1,0 +1,9 @@
+// case: an endless loop
+// replace: compose
+// expect: compose | timeout | timed out after
+namespace rigid {
+AxisAngle compose(const AxisAngle& first, const AxisAngle& second) {
+    volatile double spin = first.angle + second.angle;
+    for (;;) spin = spin + 1;
+}
+}  // namespace rigid

@@ -1,0 +1,225 @@
+// Reports: the class CSV and Markdown summary (instructor), and the student's check.
+#include <cstdio>
+#include <map>
+
+#include "grading.hpp"
+
+namespace grading {
+
+namespace {
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    return "\"" + replace_all(s, "\"", "\"\"") + "\"";
+}
+
+std::string md_cell(const std::string& s) {
+    std::string out = replace_all(replace_all(s, "|", "\\|"), "\n", " ");
+    return out;
+}
+
+struct ExerciseStatus {
+    std::string status;  // pass, fail, not started, build error, missing, timeout, crash
+    int passed = 0, total = 0;
+    double score = 0;
+    const TestResult* first_problem = nullptr;
+};
+
+ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, const std::string& exercise) {
+    ExerciseStatus s;
+    int not_started = 0;
+    std::map<std::string, int> verdicts;
+    for (const auto& t : r.tests) {
+        if (t.topic != topic || t.exercise != exercise) continue;
+        ++s.total;
+        s.score += t.score;
+        ++verdicts[t.verdict];
+        if (t.verdict == "pass") ++s.passed;
+        else if (!s.first_problem) s.first_problem = &t;
+        not_started += t.not_started;
+    }
+    if (s.total == 0) s.status = "";
+    else if (s.passed == s.total) s.status = "pass";
+    else if (verdicts["build error"]) s.status = "build error";
+    else if (verdicts["missing"]) s.status = "missing";
+    else if (not_started == s.total) s.status = "not started";
+    else if (verdicts["crash"]) s.status = "crash";
+    else if (verdicts["timeout"]) s.status = "timeout";
+    else s.status = "fail";
+    return s;
+}
+
+const char* verdict_names[] = {"pass", "fail", "timeout", "crash", "build error", "missing"};
+
+}  // namespace
+
+std::string class_csv(const Setup& setup, const std::vector<SubmissionResult>& results) {
+    std::string out = "student,score,max_score,tests_passed,tests";
+    for (const auto& topic : setup.topics)
+        for (const auto& e : topic.exercises) out += "," + csv_field(topic.chapter + " " + e.name);
+    out += ",problems\n";
+    for (const auto& r : results) {
+        int passed = 0;
+        for (const auto& t : r.tests) passed += t.verdict == "pass";
+        out += csv_field(r.student) + "," + format_number(r.score) + "," + format_number(r.max_score) + "," +
+               std::to_string(passed) + "," + std::to_string(r.tests.size());
+        for (const auto& topic : setup.topics)
+            for (const auto& e : topic.exercises) out += "," + format_number(status_of(r, topic.name, e.name).score);
+        std::string notes;
+        for (const auto& n : r.notes) notes += (notes.empty() ? "" : "; ") + n;
+        out += "," + csv_field(notes) + "\n";
+    }
+    return out;
+}
+
+std::string class_summary(const Setup& setup, const std::vector<SubmissionResult>& results,
+                          const std::vector<std::string>& ignored) {
+    std::size_t exercises = 0, tests = 0;
+    double points = 0;
+    for (const auto& topic : setup.topics)
+        for (const auto& e : topic.exercises) ++exercises, tests += e.tests.size(), points += e.points;
+    std::string out = "# Grading summary\n\n";
+    out += std::to_string(results.size()) + " submissions, graded on " + std::to_string(setup.topics.size()) +
+           " topics, " + std::to_string(exercises) + " exercises, " + std::to_string(tests) + " tests, " +
+           format_number(points) + " points (harness " + harness_version + ", instructor files " +
+           setup.fingerprint + ").\n\n";
+    out += "Verdicts are counted per test. Per-student results: `results/<student>.json` (Gradescope's\n"
+           "results.json format); build logs: `logs/<student>/`; all scores: `class.csv`.\n\n";
+    out += "| Student | Score | Pass | Fail | Timeout | Crash | Build error | Missing |\n";
+    out += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto& r : results) {
+        std::map<std::string, int> count;
+        for (const auto& t : r.tests) ++count[t.verdict];
+        out += "| " + md_cell(r.student) + " | " + format_number(r.score) + " / " + format_number(r.max_score);
+        for (const char* v : verdict_names) out += " | " + std::to_string(count[v]);
+        out += " |\n";
+    }
+    out += "\n## Exercises\n\nHow many submissions pass each exercise completely.\n\n";
+    out += "| Chapter | Exercise | Points | Pass | Not started | Other |\n|---|---|---:|---:|---:|---:|\n";
+    for (const auto& topic : setup.topics) {
+        const Chapter* c = find_chapter(setup, topic.chapter);
+        for (const auto& e : topic.exercises) {
+            int pass = 0, not_started = 0;
+            for (const auto& r : results) {
+                const auto s = status_of(r, topic.name, e.name).status;
+                pass += s == "pass";
+                not_started += s == "not started";
+            }
+            out += "| " + (c ? std::to_string(c->number) + ". " + md_cell(c->title) : topic.chapter) + " | `" + e.name +
+                   "` | " + format_number(e.points) + " | " + std::to_string(pass) + " | " + std::to_string(not_started) +
+                   " | " + std::to_string(static_cast<int>(results.size()) - pass - not_started) + " |\n";
+        }
+    }
+    bool any = false;
+    for (const auto& r : results)
+        for (const auto& n : r.notes) {
+            if (!any) out += "\n## Files that were missing, refused or did not build\n\n", any = true;
+            out += "- " + md_cell(r.student) + ": " + md_cell(n) + "\n";
+        }
+    if (!ignored.empty()) {
+        out += "\n## Not graded\n\n";
+        for (const auto& i : ignored) out += "- " + md_cell(i) + "\n";
+    }
+    return out;
+}
+
+std::string hint_for(const Setup& setup, const std::string& exercise) {
+    std::string hint;
+    bool in = false;
+    for (const auto& line : split(read_file(setup.root + "/exercises/hints.md"), '\n')) {
+        if (starts_with(line, "#")) {
+            if (in) break;
+            in = trim(line) == "### " + exercise;
+            continue;
+        }
+        if (in) hint += line + "\n";
+    }
+    return trim(hint);
+}
+
+bool print_check(const Setup& setup, const SubmissionResult& r, const std::string& folder) {
+    struct Problem {
+        std::string topic, exercise, status;
+        const TestResult* test;
+    };
+    std::vector<Problem> problems;
+    int all_pass = 0, all_total = 0;
+    for (const auto& chapter : setup.chapters) {
+        std::vector<std::pair<std::string, ExerciseStatus>> rows;
+        std::vector<std::string> topics;
+        for (const auto& topic : setup.topics) {
+            if (topic.chapter != chapter.label) continue;
+            for (const auto& e : topic.exercises) {
+                const ExerciseStatus s = status_of(r, topic.name, e.name);
+                if (s.status.empty()) continue;  // not selected
+                rows.emplace_back(e.name, s);
+                if (s.status != "pass") problems.push_back({topic.name, e.name, s.status, s.first_problem});
+            }
+        }
+        if (rows.empty()) continue;
+        int pass = 0;
+        for (const auto& [name, s] : rows) pass += s.status == "pass";
+        all_pass += pass;
+        all_total += static_cast<int>(rows.size());
+        std::printf("\nChapter %d, %s: %d of %zu exercises pass\n", chapter.number, chapter.title.c_str(), pass, rows.size());
+        for (const auto& [name, s] : rows) {
+            std::string detail;
+            if (s.status != "pass" && s.status != "not started" && s.status != "missing" && s.status != "build error")
+                detail = std::to_string(s.passed) + " of " + std::to_string(s.total) + " tests pass";
+            char row[256];
+            std::snprintf(row, sizeof row, "  %-12s %-26s %s", s.status.c_str(), name.c_str(), detail.c_str());
+            std::printf("%s\n", trim(row).insert(0, "  ").c_str());
+        }
+    }
+    if (problems.empty()) {
+        std::printf("\nAll %d exercises pass.\n", all_total);
+        return true;
+    }
+    // The first exercise to work on: the first one that fails, else the first not started.
+    const Problem* first = nullptr;
+    for (const auto& p : problems)
+        if (p.status != "not started") {
+            first = &p;
+            break;
+        }
+    if (!first) first = &problems.front();
+    const TestResult& t = *first->test;
+    if (first->status == "build error" || first->status == "missing") {
+        // The whole file is the problem, not one exercise.
+        std::printf("\n%s/%s.cpp: %s\n  %s\n", folder.c_str(), first->topic.c_str(),
+                    first->status == "missing" ? "not graded" : "does not build", t.message.c_str());
+        const Chapter* c = find_chapter(setup, t.chapter);
+        std::printf("\n%d of %d exercises pass. Check this chapter alone: cmake/workbook check %s\n", all_pass, all_total,
+                    c ? std::to_string(c->number).c_str() : t.chapter.c_str());
+        return false;
+    }
+    std::printf("\n%s: %s (%s/%s.cpp)\n", first->status == "not started" ? "Next exercise" : "First exercise to fix",
+                first->exercise.c_str(), folder.c_str(), first->topic.c_str());
+    if (first->status == "not started") {
+        std::printf("  not started: its body is still todo(\"%s\")\n", first->exercise.c_str());
+    } else {
+        std::printf("  test: %s\n  %s", t.name.c_str(), t.verdict.c_str());
+        std::string message = t.message;
+        if (t.verdict == "fail" || t.verdict == "build error" || t.verdict == "missing") {
+            std::printf(":\n");
+            for (const auto& line : split(message, '\n')) std::printf("    %s\n", line.c_str());
+        } else {
+            std::printf(": %s\n", message.c_str());
+        }
+        if (!t.output.empty()) {
+            std::printf("  the test printed:\n");
+            for (const auto& line : split(t.output, '\n')) std::printf("    %s\n", line.c_str());
+        }
+    }
+    const std::string hint = hint_for(setup, first->exercise);
+    if (!hint.empty()) {
+        std::printf("\nHint (exercises/hints.md, %s):\n", first->exercise.c_str());
+        for (const auto& line : split(hint, '\n')) std::printf("  %s\n", line.c_str());
+    }
+    if (all_total > 1)
+        std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", all_pass, all_total,
+                    first->exercise.c_str());
+    return false;
+}
+
+}  // namespace grading

@@ -1,0 +1,200 @@
+// Running a program under limits: its own process group, a wall-clock deadline that kills the
+// whole group, rlimits on address space, CPU, file size, core files and (for tests) process
+// count, stdin from /dev/null, stdout and stderr into a file. Linux (Debian 12).
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+
+#include "grading.hpp"
+
+namespace grading {
+
+namespace {
+
+void set_limit(int resource, rlim_t soft, rlim_t hard) {
+    rlimit current;
+    if (getrlimit(resource, &current) == 0) {
+        // Never ask for more than the hard limit we were given.
+        if (current.rlim_max != RLIM_INFINITY) {
+            hard = std::min(hard, current.rlim_max);
+            soft = std::min(soft, hard);
+        }
+    }
+    const rlimit wanted{soft, hard};
+    setrlimit(resource, &wanted);
+}
+
+}  // namespace
+
+std::string signal_name(int signal) {
+    switch (signal) {
+        case SIGSEGV: return "SIGSEGV";
+        case SIGABRT: return "SIGABRT";
+        case SIGFPE: return "SIGFPE";
+        case SIGILL: return "SIGILL";
+        case SIGBUS: return "SIGBUS";
+        case SIGKILL: return "SIGKILL";
+        case SIGTERM: return "SIGTERM";
+        case SIGXCPU: return "SIGXCPU";
+        case SIGXFSZ: return "SIGXFSZ";
+        case SIGPIPE: return "SIGPIPE";
+        case SIGTRAP: return "SIGTRAP";
+        case SIGSYS: return "SIGSYS";
+        case SIGINT: return "SIGINT";
+        case SIGHUP: return "SIGHUP";
+        case SIGALRM: return "SIGALRM";
+        case SIGUSR1: return "SIGUSR1";
+        case SIGUSR2: return "SIGUSR2";
+        default: return "signal " + std::to_string(signal);
+    }
+}
+
+Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
+                    const std::string& output_path, const Limits& limits, std::string* report_text) {
+    Outcome outcome;
+    // Everything the child needs is prepared before fork.
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const char* path = std::getenv("PATH");
+    std::vector<std::string> environment = {
+        std::string("PATH=") + (path ? path : "/usr/local/bin:/usr/bin:/bin"),
+        "LC_ALL=C", "LANG=C", "HOME=" + cwd, "TMPDIR=" + cwd};
+    std::vector<char*> env;
+    for (auto& e : environment) env.push_back(e.data());
+    env.push_back(nullptr);
+    const rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
+    const rlim_t memory = static_cast<rlim_t>(limits.memory_mb) << 20;
+    const rlim_t output = static_cast<rlim_t>(limits.output_bytes);
+
+    int report[2];  // the child reports a failed exec here; closes on a successful one
+    if (pipe2(report, O_CLOEXEC) != 0) {
+        outcome.error = std::string("pipe: ") + std::strerror(errno);
+        return outcome;
+    }
+    int channel[2] = {-1, -1};  // the report pipe, fd 3 in the child
+    if (report_text) {
+        report_text->clear();
+        if (pipe2(channel, O_CLOEXEC) != 0) {
+            outcome.error = std::string("pipe: ") + std::strerror(errno);
+            close(report[0]);
+            close(report[1]);
+            return outcome;
+        }
+    }
+    const pid_t parent = getpid();
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        outcome.error = std::string("fork: ") + std::strerror(errno);
+        close(report[0]);
+        close(report[1]);
+        if (report_text) close(channel[0]), close(channel[1]);
+        return outcome;
+    }
+    if (pid == 0) {
+        setpgid(0, 0);
+        prctl(PR_SET_PDEATHSIG, SIGKILL);  // the harness dies: so does the test
+        if (getppid() != parent) _exit(127);
+        close(report[0]);
+        const int in = open("/dev/null", O_RDONLY);
+        const int out = open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (in < 0 || out < 0 || chdir(cwd.c_str()) != 0) {
+            const int e = errno;
+            (void)!write(report[1], &e, sizeof e);
+            _exit(127);
+        }
+        // Both pipe ends the child keeps move above fd 10 first, out of the way of 0 to 3.
+        const int exec_report = fcntl(report[1], F_DUPFD_CLOEXEC, 10);
+        const int report_end = report_text ? fcntl(channel[1], F_DUPFD_CLOEXEC, 10) : -1;
+        dup2(in, 0);
+        dup2(out, 1);
+        dup2(out, 2);
+        if (report_text) dup2(report_end, 3);  // without O_CLOEXEC: the program keeps it
+        for (int fd = 3 + (report_text ? 1 : 0); fd < 1024; ++fd)
+            if (fd != exec_report) close(fd);
+        report[1] = exec_report;
+        for (int s = 1; s < NSIG; ++s) signal(s, SIG_DFL);
+        sigset_t none;
+        sigemptyset(&none);
+        sigprocmask(SIG_SETMASK, &none, nullptr);
+        set_limit(RLIMIT_AS, memory, memory);
+        set_limit(RLIMIT_CPU, cpu, cpu + 1);
+        set_limit(RLIMIT_FSIZE, output, output);
+        set_limit(RLIMIT_CORE, 0, 0);
+        if (limits.forbid_processes) set_limit(RLIMIT_NPROC, 0, 0);
+        execve(args[0], args.data(), env.data());
+        const int e = errno;
+        (void)!write(report[1], &e, sizeof e);
+        _exit(127);
+    }
+    setpgid(pid, pid);
+    close(report[1]);
+    if (report_text) {
+        close(channel[1]);
+        fcntl(channel[0], F_SETFL, O_NONBLOCK);
+    }
+    // What the program writes to fd 3, kept up to 64 MiB.
+    auto drain = [&]() {
+        if (!report_text) return;
+        char buffer[65536];
+        ssize_t n;
+        while ((n = read(channel[0], buffer, sizeof buffer)) > 0)
+            if (report_text->size() < (64u << 20)) report_text->append(buffer, static_cast<std::size_t>(n));
+    };
+    int exec_errno = 0;
+    const bool exec_failed = read(report[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
+    close(report[0]);
+
+    const auto deadline = start + std::chrono::duration<double>(limits.wall_seconds);
+    int status = 0;
+    auto pause = std::chrono::microseconds(200);
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) break;
+        if (std::chrono::steady_clock::now() >= deadline) {
+            outcome.timed_out = true;
+            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+            break;
+        }
+        if (report_text) {
+            pollfd p{channel[0], POLLIN, 0};
+            poll(&p, 1, static_cast<int>(std::max<long>(1, pause.count() / 1000)));
+            drain();
+        } else {
+            std::this_thread::sleep_for(pause);
+        }
+        pause = std::min(pause * 2, std::chrono::microseconds(10000));
+    }
+    kill(-pid, SIGKILL);  // anything it left behind in its group
+    if (report_text) {
+        drain();
+        close(channel[0]);
+    }
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (exec_failed) {
+        outcome.error = "cannot run " + argv[0] + ": " + std::strerror(exec_errno);
+        return outcome;
+    }
+    outcome.started = true;
+    if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+    else if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
+    return outcome;
+}
+
+}  // namespace grading

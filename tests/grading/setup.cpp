@@ -1,0 +1,380 @@
+// What is graded: the manifest (written at build time from the reference graders) and the
+// build facts (grading/topics.txt, written by CMake), read back by every grading run.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+#include "grading.hpp"
+
+namespace grading {
+
+namespace {
+
+// ---- a small JSON reader, enough for compile_commands.json ----------------------------------
+struct Json {
+    enum Kind { Null, String, Array, Object, Other } kind = Null;
+    std::string text;
+    std::vector<Json> items;
+    std::vector<std::pair<std::string, Json>> members;
+    const Json* get(const std::string& key) const {
+        for (const auto& [k, v] : members)
+            if (k == key) return &v;
+        return nullptr;
+    }
+};
+
+struct JsonReader {
+    const std::string& s;
+    std::size_t i = 0;
+    bool failed = false;
+    void space() {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\n' || s[i] == '\t' || s[i] == '\r')) ++i;
+    }
+    std::string string() {
+        std::string out;
+        ++i;  // the opening quote
+        while (i < s.size() && s[i] != '"') {
+            if (s[i] == '\\' && i + 1 < s.size()) {
+                const char e = s[++i];
+                if (e == 'n') out += '\n';
+                else if (e == 't') out += '\t';
+                else if (e == 'r') out += '\r';
+                else if (e == 'b') out += '\b';
+                else if (e == 'f') out += '\f';
+                else if (e == 'u' && i + 4 < s.size()) {
+                    const unsigned code = std::stoul(s.substr(i + 1, 4), nullptr, 16);
+                    i += 4;
+                    if (code < 0x80) out += static_cast<char>(code);
+                    else if (code < 0x800) out += static_cast<char>(0xC0 | (code >> 6)), out += static_cast<char>(0x80 | (code & 0x3F));
+                    else out += static_cast<char>(0xE0 | (code >> 12)), out += static_cast<char>(0x80 | ((code >> 6) & 0x3F)), out += static_cast<char>(0x80 | (code & 0x3F));
+                } else out += e;
+            } else {
+                out += s[i];
+            }
+            ++i;
+        }
+        if (i >= s.size()) failed = true;
+        ++i;
+        return out;
+    }
+    Json value() {
+        Json v;
+        space();
+        if (i >= s.size()) {
+            failed = true;
+            return v;
+        }
+        if (s[i] == '"') {
+            v.kind = Json::String;
+            v.text = string();
+        } else if (s[i] == '[') {
+            v.kind = Json::Array;
+            ++i;
+            space();
+            if (i < s.size() && s[i] == ']') return ++i, v;
+            while (!failed) {
+                v.items.push_back(value());
+                space();
+                if (i < s.size() && s[i] == ',') ++i;
+                else if (i < s.size() && s[i] == ']') return ++i, v;
+                else failed = true;
+            }
+        } else if (s[i] == '{') {
+            v.kind = Json::Object;
+            ++i;
+            space();
+            if (i < s.size() && s[i] == '}') return ++i, v;
+            while (!failed) {
+                space();
+                if (i >= s.size() || s[i] != '"') {
+                    failed = true;
+                    break;
+                }
+                std::string key = string();
+                space();
+                if (i >= s.size() || s[i] != ':') {
+                    failed = true;
+                    break;
+                }
+                ++i;
+                v.members.emplace_back(key, value());
+                space();
+                if (i < s.size() && s[i] == ',') ++i;
+                else if (i < s.size() && s[i] == '}') return ++i, v;
+                else failed = true;
+            }
+        } else {
+            v.kind = Json::Other;
+            while (i < s.size() && std::string(",]} \n\t\r").find(s[i]) == std::string::npos) v.text += s[i++];
+        }
+        return v;
+    }
+};
+
+// The compile command of <file> in compile_commands.json, made into a template.
+std::string compile_template(const std::string& compile_commands, const std::vector<std::string>& candidates,
+                             std::vector<std::string>& out) {
+    bool ok = false;
+    const std::string text = read_file(compile_commands, &ok);
+    if (!ok) return "cannot read " + compile_commands + " (configure with CMAKE_EXPORT_COMPILE_COMMANDS=ON)";
+    JsonReader reader{text};
+    const Json all = reader.value();
+    if (reader.failed || all.kind != Json::Array) return compile_commands + " is not a JSON array";
+    for (const auto& file : candidates) {
+        for (const auto& entry : all.items) {
+            const Json* f = entry.get("file");
+            if (!f || f->text != file) continue;
+            const Json* directory = entry.get("directory");
+            std::vector<std::string> words;
+            if (const Json* arguments = entry.get("arguments")) {
+                for (const auto& a : arguments->items) words.push_back(a.text);
+            } else if (const Json* command = entry.get("command")) {
+                words = shell_split(command->text);
+            }
+            const std::string dir = directory ? directory->text : "";
+            bool have_source = false, have_object = false;
+            for (std::size_t k = 0; k < words.size(); ++k) {
+                const std::string& w = words[k];
+                if (k == 0) {
+                    out.push_back(w);
+                } else if (w == "-o" && k + 1 < words.size()) {
+                    out.push_back("-o"), out.push_back("@OBJECT@"), ++k, have_object = true;
+                } else if (w == "-c" && k + 1 < words.size()) {
+                    out.push_back("-c"), out.push_back("@SOURCE@"), ++k, have_source = true;
+                } else if (w == file) {
+                    out.push_back("@SOURCE@"), have_source = true;
+                } else if (w == "-Werror" || starts_with(w, "-Werror=") || w == "-MD" || w == "-MMD") {
+                    // Warnings never fail a student's build; dependency files are not wanted.
+                } else if ((w == "-MT" || w == "-MF" || w == "-MQ") && k + 1 < words.size()) {
+                    ++k;
+                } else if (starts_with(w, "-I") && w.size() > 2 && w[2] != '/' && !dir.empty()) {
+                    out.push_back("-I" + dir + "/" + w.substr(2));
+                } else {
+                    out.push_back(w);
+                }
+            }
+            if (!have_source || !have_object) {
+                out.clear();
+                return "the compile command of " + file + " in " + compile_commands + " has no -c or -o";
+            }
+            out.push_back("-fdiagnostics-color=never");  // diagnostics only: the code is compiled as in the build
+            out.push_back("-fmax-errors=20");
+            return {};
+        }
+    }
+    return "no compile command for " + candidates.front() + " in " + compile_commands;
+}
+
+std::string hash_instructor_files(const std::string& root) {
+    std::string all;
+    for (const char* folder : {"tests", "tests/grading", "exercises/rigid", "solutions"}) {
+        const std::string dir = root + "/" + folder;
+        for (const auto& name : list_dir(dir)) {
+            const std::string path = dir + "/" + name;
+            if (is_directory(path)) continue;
+            bool ok = false;
+            const std::string content = read_file(path, &ok);
+            if (!ok) continue;
+            all += std::string(folder) + "/" + name + "\n" + hex(hash(content)) + "\n";
+        }
+    }
+    return all;
+}
+
+}  // namespace
+
+const Chapter* find_chapter(const Setup& setup, const std::string& label) {
+    for (const auto& c : setup.chapters)
+        if (c.label == label) return &c;
+    return nullptr;
+}
+
+std::string relative_to_root(const Setup& setup, std::string text) {
+    if (!setup.root.empty()) text = replace_all(text, setup.root + "/", "");
+    return text;
+}
+
+// ---- the manifest ----------------------------------------------------------------------------
+std::string make_manifest(const std::string& topics_path, const std::string& points_path,
+                          const std::string& out_path) {
+    bool ok = false;
+    const std::string facts = read_file(topics_path, &ok);
+    if (!ok) return "cannot read " + topics_path;
+    std::string root;
+    struct Listed {
+        std::string topic, chapter, reference;
+    };
+    std::vector<Listed> topics;
+    for (const auto& line : split(facts, '\n')) {
+        const auto f = split(line, '\t');
+        if (f[0] == "root" && f.size() > 1) root = f[1];
+        else if (f[0] == "topic" && f.size() > 2) topics.push_back({f[1], f[2], ""});
+        else if (f[0] == "reference" && f.size() > 1 && !topics.empty()) topics.back().reference = f[1];
+    }
+    // Points per exercise: "<exercise> <points>" lines; 1 point for an exercise not listed.
+    std::map<std::string, double> points;
+    std::map<std::string, bool> used;
+    const std::string points_text = read_file(points_path);
+    int number = 0;
+    for (const auto& raw : split(points_text, '\n')) {
+        ++number;
+        const std::string line = trim(raw.substr(0, raw.find('#')));
+        if (line.empty()) continue;
+        std::istringstream in(line);
+        std::string name;
+        double p = -1;
+        if (!(in >> name >> p) || p < 0) return points_path + ":" + std::to_string(number) + ": expected '<exercise> <points>'";
+        points[name] = p;
+        used[name] = false;
+    }
+    // Chapter titles from the table of contents.
+    std::map<std::string, Chapter> chapters;
+    for (const auto& line : split(read_file(root + "/chapters/README.md"), '\n')) {
+        const auto close = line.find("/README.md)");
+        const auto open = line.rfind("](", close);
+        const auto bracket = line.rfind('[', open);
+        if (close == std::string::npos || open == std::string::npos || bracket == std::string::npos) continue;
+        Chapter c;
+        c.slug = line.substr(open + 2, close - open - 2);
+        c.title = line.substr(bracket + 1, open - bracket - 1);
+        if (c.slug.size() < 3 || !isdigit(static_cast<unsigned char>(c.slug[0])) || !isdigit(static_cast<unsigned char>(c.slug[1]))) continue;
+        c.number = std::stoi(c.slug.substr(0, 2));
+        c.label = "ch" + c.slug.substr(0, 2);
+        chapters[c.label] = c;
+    }
+
+    std::string out =
+        "# The grading manifest: every exercise and test that `cmake/workbook grade` and `check` grade.\n"
+        "# Generated at build time from the workbook_grader() declarations and the reference graders'\n"
+        "# test lists; points per exercise from tests/grading/points.txt. Do not edit.\n";
+    std::set<std::string> chapters_written;
+    const std::string work = out_path + ".list";
+    for (const auto& t : topics) {
+        Limits limits;
+        limits.wall_seconds = 60;
+        limits.forbid_processes = false;
+        const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=xml", "--no-version"}, ".", work, limits);
+        const std::string xml = read_file(work);
+        std::remove(work.c_str());
+        if (!o.started || o.exit_code != 0) return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
+        const std::string test_file = "tests/" + t.topic + "_test.cpp";
+        std::vector<Exercise> exercises;
+        for (std::size_t pos = 0; (pos = xml.find("<TestCase ", pos)) != std::string::npos; ++pos) {
+            const std::string element = xml.substr(pos, xml.find('>', pos) - pos);
+            const std::string filename = xml_attribute(element, "filename");
+            if (filename != root + "/" + test_file) continue;
+            const std::string name = xml_attribute(element, "name");
+            const auto colon = name.find(':');
+            if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
+                return test_file + ": the test \"" + name + "\" is not named \"<function>: <property>\"";
+            const std::string exercise = name.substr(0, colon);
+            Exercise* e = nullptr;
+            for (auto& x : exercises)
+                if (x.name == exercise) e = &x;
+            if (!e) {
+                exercises.push_back({exercise, 1, {}});
+                e = &exercises.back();
+            }
+            e->tests.push_back({name, std::stoi(xml_attribute(element, "line"))});
+        }
+        if (exercises.empty()) return t.reference + " lists no tests from " + test_file;
+        if (!chapters_written.count(t.chapter)) {
+            chapters_written.insert(t.chapter);
+            Chapter c{t.chapter, 0, t.chapter, t.chapter};  // not linked from the contents yet
+            const auto digits = t.chapter.find_first_of("0123456789");
+            if (digits != std::string::npos) c.number = std::atoi(t.chapter.c_str() + digits);
+            if (chapters.count(t.chapter)) c = chapters[t.chapter];
+            out += "chapter\t" + c.label + "\t" + std::to_string(c.number) + "\t" + c.slug + "\t" + c.title + "\n";
+        }
+        out += "topic\t" + t.topic + "\t" + t.chapter + "\t" + test_file + "\n";
+        for (const auto& e : exercises) {
+            double p = 1;
+            if (points.count(e.name)) p = points[e.name], used[e.name] = true;
+            out += "exercise\t" + t.topic + "\t" + e.name + "\t" + format_number(p) + "\n";
+            for (const auto& test : e.tests)
+                out += "test\t" + t.topic + "\t" + e.name + "\t" + std::to_string(test.line) + "\t" + test.name + "\n";
+        }
+    }
+    for (const auto& [name, was_used] : used)
+        if (!was_used)
+            std::fprintf(stderr, "warning: %s gives points to '%s', which is not an exercise of any grader\n",
+                         points_path.c_str(), name.c_str());
+    return write_file(out_path, out) ? "" : "cannot write " + out_path;
+}
+
+std::string load_setup(const std::string& dir, Setup& setup) {
+    setup = Setup{};
+    setup.dir = dir;
+    bool ok = false;
+    const std::string facts = read_file(dir + "/topics.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/topics.txt: build the target `grading` first";
+    setup.manifest_text = read_file(dir + "/manifest.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/manifest.txt: build the target `grading` first";
+    std::string compile_commands;
+    std::map<std::string, Topic> built;
+    std::string current;
+    for (const auto& line : split(facts, '\n')) {
+        auto f = split(line, '\t');
+        if (f[0] == "root" && f.size() > 1) setup.root = f[1];
+        else if (f[0] == "build" && f.size() > 1) setup.build = f[1];
+        else if (f[0] == "compiler" && f.size() > 1) setup.compiler = f[1];
+        else if (f[0] == "nm" && f.size() > 1) setup.nm = f[1];
+        else if (f[0] == "compile_commands" && f.size() > 1) compile_commands = f[1];
+        else if (f[0] == "link_flags" && f.size() > 1) setup.link_flags = shell_split(f[1]);
+        else if (f[0] == "topic" && f.size() > 2) current = f[1], built[current].name = f[1];
+        else if (f[0] == "reference" && f.size() > 1) built[current].reference = f[1];
+        else if ((f[0] == "objects" || f[0] == "link") && !current.empty()) {
+            auto& list = f[0] == "objects" ? built[current].objects : built[current].link;
+            for (std::size_t k = 1; k < f.size(); ++k)
+                for (const auto& item : split(f[k], ';'))
+                    if (!item.empty()) list.push_back(item);
+        }
+    }
+    for (const auto& line : split(setup.manifest_text, '\n')) {
+        const auto f = split(line, '\t');
+        if (f[0] == "chapter" && f.size() > 4) {
+            setup.chapters.push_back({f[1], std::stoi(f[2]), f[3], f[4]});
+        } else if (f[0] == "topic" && f.size() > 3) {
+            if (!built.count(f[1])) return "the manifest names topic " + f[1] + ", which topics.txt does not";
+            Topic t = built[f[1]];
+            t.chapter = f[2];
+            t.test_file = f[3];
+            std::vector<std::string> compile;
+            const std::string problem = compile_template(
+                compile_commands, {setup.root + "/exercises/" + t.name + ".cpp", setup.root + "/solutions/" + t.name + ".cpp"},
+                compile);
+            if (!problem.empty()) return problem;
+            t.compile = compile;
+            setup.topics.push_back(t);
+        } else if (f[0] == "exercise" && f.size() > 3 && !setup.topics.empty()) {
+            setup.topics.back().exercises.push_back({f[2], std::stod(f[3]), {}});
+        } else if (f[0] == "test" && f.size() > 4 && !setup.topics.empty() && !setup.topics.back().exercises.empty()) {
+            setup.topics.back().exercises.back().tests.push_back({f[4], std::stoi(f[3])});
+        }
+    }
+    if (setup.topics.empty()) return dir + "/manifest.txt lists no topics";
+
+    // The fingerprint of the instructor's side: what is graded, how, and with which sources.
+    std::string all = std::string(harness_version) + "\n" + setup.manifest_text;
+    for (const auto& t : setup.topics) {
+        for (const auto& w : t.compile) all += relative_to_root(setup, w) + " ";
+        all += "\n";
+        for (const auto& w : t.link) all += relative_to_root(setup, w) + " ";
+        all += "\n";
+    }
+    for (const auto& w : setup.link_flags) all += w + " ";
+    Limits quick;
+    quick.forbid_processes = false;
+    const std::string version_file = dir + "/compiler-version." + std::to_string(getpid()) + ".txt";
+    run_limited({setup.compiler, "--version"}, dir, version_file, quick);
+    all += "\n" + split(read_file(version_file), '\n')[0] + "\n";
+    std::remove(version_file.c_str());
+    all += hash_instructor_files(setup.root);
+    setup.fingerprint = hex(hash(all));
+    return {};
+}
+
+}  // namespace grading

@@ -1,0 +1,372 @@
+// workbook_grade: the grading run's command line (cmake/workbook grade and check call it).
+//
+//   workbook_grade grade --setup <build>/grading <submissions> <out> [options]
+//   workbook_grade check --setup <build>/grading [--folder <exercises>] [chapter|topic|exercise]
+//   workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>
+//
+// grade: one folder per student in <submissions>, each holding exercises/*.cpp (or the .cpp
+// files directly). Writes <out>/results/<student>.json (Gradescope's results.json),
+// <out>/class.csv, <out>/summary.md and <out>/run.json (timings: the only file that changes
+// from run to run). Submissions are graded in parallel, each in its own worker process; a
+// submission whose result is already there for the same inputs is not graded again.
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <map>
+
+#include "grading.hpp"
+
+using namespace grading;
+
+namespace {
+
+const char* usage =
+    "usage:\n"
+    "  workbook_grade grade --setup <build>/grading <submissions-folder> <out-folder> [options]\n"
+    "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [--out <folder>] [chapter|topic|exercise] [options]\n"
+    "  workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>\n"
+    "options:\n"
+    "  -j <n>                 submissions graded at once (default: the number of cores)\n"
+    "  --timeout <s>          wall-clock limit of each test (default 10)\n"
+    "  --memory <MB>          address space of each test (default 1024)\n"
+    "  --output-limit <KB>    what each test may write (default 1024)\n"
+    "  --build-timeout <s>    limit of each compile and link (default 120)\n"
+    "  --build-memory <MB>    address space of the compiler (default 4096)\n"
+    "  --max-file-size <KB>   largest exercise file taken from a submission (default 1024)\n"
+    "  --only <name>[,<name>] grade only these submissions (for sharding; no class files)\n"
+    "  --force                grade again even when a result for the same inputs exists\n"
+    "  --keep-work            keep each submission's build folder (<out>/.work/)\n";
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "workbook_grade: %s\n", message.c_str());
+    return 2;
+}
+
+double number(const std::string& option, const char* value) {
+    char* end = nullptr;
+    const double x = value ? std::strtod(value, &end) : 0;
+    if (!value || *end || !(x > 0)) {
+        std::fprintf(stderr, "workbook_grade: %s needs a positive number\n", option.c_str());
+        std::exit(2);
+    }
+    return x;
+}
+
+struct Args {
+    std::string setup, topics, points, out, folder;
+    std::vector<std::string> positional;
+    std::set<std::string> only;
+    int jobs = 0;
+    bool force = false;
+    Options options;
+};
+
+Args parse(int argc, char** argv) {
+    Args a;
+    for (int i = 2; i < argc; ++i) {
+        const std::string o = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
+        auto take = [&]() -> std::string {
+            if (!v) {
+                std::fprintf(stderr, "workbook_grade: %s needs a value\n%s", o.c_str(), usage);
+                std::exit(2);
+            }
+            ++i;
+            return v;
+        };
+        if (o == "--setup") a.setup = take();
+        else if (o == "--topics") a.topics = take();
+        else if (o == "--points") a.points = take();
+        else if (o == "--out") a.out = take();
+        else if (o == "--folder") a.folder = take();
+        else if (o == "-j" || o == "--jobs") a.jobs = static_cast<int>(number(o, take().c_str()));
+        else if (starts_with(o, "-j") && o.size() > 2) a.jobs = static_cast<int>(number("-j", o.c_str() + 2));
+        else if (o == "--timeout") a.options.test_limits.wall_seconds = number(o, take().c_str());
+        else if (o == "--memory") a.options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+        else if (o == "--output-limit") a.options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+        else if (o == "--build-timeout") a.options.build_limits.wall_seconds = number(o, take().c_str());
+        else if (o == "--build-memory") a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+        else if (o == "--max-file-size") a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+        else if (o == "--only") {
+            for (const auto& name : split(take(), ','))
+                if (!name.empty()) a.only.insert(name);
+        } else if (o == "--force") a.force = true;
+        else if (o == "--keep-work") a.options.keep_work = true;
+        else if (o == "-h" || o == "--help") std::printf("%s", usage), std::exit(0);
+        else if (starts_with(o, "-") && o.size() > 1) std::fprintf(stderr, "workbook_grade: unknown option %s\n%s", o.c_str(), usage), std::exit(2);
+        else a.positional.push_back(o);
+    }
+    return a;
+}
+
+std::string absolute(const std::string& path) {
+    if (starts_with(path, "/")) return path;
+    char buffer[4096];
+    if (!getcwd(buffer, sizeof buffer)) return path;
+    return std::string(buffer) + "/" + path;
+}
+
+std::string load(const Args& a, Setup& setup) {
+    if (a.setup.empty()) return "--setup <build>/grading is required";
+    return load_setup(absolute(a.setup), setup);
+}
+
+// ---- grade -------------------------------------------------------------------------------------
+int grade(const Args& a) {
+    if (a.positional.size() != 2) return fail(std::string("grade needs <submissions-folder> <out-folder>\n") + usage);
+    Setup setup;
+    if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
+    const std::string submissions = absolute(a.positional[0]);
+    const std::string out = absolute(a.positional[1]);
+    if (!is_directory(submissions)) return fail(submissions + " is not a folder");
+    if (starts_with(out + "/", submissions + "/")) return fail("the out folder must not be inside the submissions folder");
+
+    std::vector<std::string> students, ignored;
+    for (const auto& name : list_dir(submissions)) {
+        if (starts_with(name, ".")) continue;
+        const std::string path = submissions + "/" + name;
+        struct stat st;
+        if (lstat(path.c_str(), &st) != 0) continue;
+        if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
+        else ignored.push_back(name + ": not a folder");
+    }
+    for (const auto& name : a.only)
+        if (std::find(students.begin(), students.end(), name) == students.end())
+            return fail("--only " + name + ": no such submission in " + submissions);
+    if (!a.only.empty()) {
+        std::vector<std::string> kept;
+        for (const auto& s : students)
+            if (a.only.count(s)) kept.push_back(s);
+        students = kept;
+    }
+    for (const char* sub : {"results", "logs", ".work"})
+        if (!make_dirs(out + "/" + sub)) return fail("cannot create " + out + "/" + sub);
+    write_file(out + "/manifest.txt", setup.manifest_text);
+
+    int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
+    if (jobs < 1) jobs = 1;
+    std::size_t tests = 0;
+    for (const auto& t : setup.topics)
+        for (const auto& e : t.exercises) tests += e.tests.size();
+    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each\n", students.size(),
+                submissions.c_str(), jobs, setup.topics.size(), tests);
+    std::fflush(stdout);
+
+    struct Item {
+        std::string name;
+        std::vector<SubmittedFile> files;
+        std::string fingerprint;
+        bool resumed = false, graded = false, ok = false;
+        double seconds = 0, cpu = 0;
+        SubmissionResult result;
+    };
+    std::vector<Item> items;
+    for (const auto& s : students) {
+        Item item;
+        item.name = s;
+        item.files = collect_files(setup, a.options, submissions + "/" + s);
+        item.fingerprint = fingerprint(setup, a.options, item.files, Selection{}.key());
+        SubmissionResult previous;
+        const std::string base = out + "/results/" + s;
+        if (!a.force && read_results_tsv(base + ".tsv", previous) && previous.fingerprint == item.fingerprint &&
+            is_directory(out + "/results") && !read_file(base + ".json").empty()) {
+            item.resumed = item.ok = true;
+            item.result = previous;
+            // When it was graded, it took this long.
+            for (const auto& line : split(read_file(out + "/logs/" + s + "/time.txt"), '\n')) {
+                const auto f = split(line, ' ');
+                if (f.size() == 2 && f[0] == "wall_seconds") item.seconds = std::atof(f[1].c_str());
+                if (f.size() == 2 && f[0] == "cpu_seconds") item.cpu = std::atof(f[1].c_str());
+            }
+        }
+        items.push_back(std::move(item));
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    std::map<pid_t, std::pair<std::size_t, std::chrono::steady_clock::time_point>> running;
+    std::size_t next = 0, done = 0;
+    const std::size_t total = items.size();
+    auto report = [&](const Item& item) {
+        std::map<std::string, int> count;
+        for (const auto& t : item.result.tests) ++count[t.verdict];
+        std::string verdicts;
+        for (const char* v : {"pass", "fail", "timeout", "crash", "build error", "missing"})
+            if (count[v]) verdicts += std::string(verdicts.empty() ? "" : ", ") + std::to_string(count[v]) + " " + v;
+        std::printf("[%*zu/%zu] %-24s %7s / %-5s %s  (%s)\n", static_cast<int>(std::to_string(total).size()), ++done,
+                    total, item.name.c_str(), format_number(item.result.score).c_str(),
+                    format_number(item.result.max_score).c_str(), verdicts.c_str(),
+                    item.resumed ? "already graded" : item.ok ? (format_number(item.seconds) + " s").c_str() : "harness error");
+        std::fflush(stdout);
+    };
+    for (auto& item : items)
+        if (item.resumed) report(item);
+    for (;;) {
+        while (static_cast<int>(running.size()) < jobs && next < items.size()) {
+            Item& item = items[next];
+            if (item.resumed) {
+                ++next;
+                continue;
+            }
+            std::fflush(stdout);
+            std::fflush(stderr);
+            const pid_t pid = fork();
+            if (pid < 0) return fail("fork failed");
+            if (pid == 0) {
+                const SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{},
+                                                            out + "/.work/" + item.name, out + "/logs/" + item.name);
+                const std::string base = out + "/results/" + item.name;
+                const bool written = write_file(base + ".json", results_json(setup, r)) &&
+                                     write_file(base + ".tsv", results_tsv(r));  // the .tsv last: it marks completion
+                std::fflush(stdout);
+                _exit(written ? 0 : 1);
+            }
+            running[pid] = {next, std::chrono::steady_clock::now()};
+            ++next;
+        }
+        if (running.empty()) break;
+        int status = 0;
+        rusage usage{};
+        const pid_t pid = wait4(-1, &status, 0, &usage);
+        if (pid < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        Item& item = items[it->second.first];
+        item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.second).count();
+        item.cpu = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+        running.erase(it);
+        item.graded = true;
+        make_dirs(out + "/logs/" + item.name);
+        write_file(out + "/logs/" + item.name + "/time.txt", "wall_seconds " + format_number(item.seconds) +
+                                                                 "\ncpu_seconds " + format_number(item.cpu) + "\n");
+        item.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+                  read_results_tsv(out + "/results/" + item.name + ".tsv", item.result);
+        if (!item.ok) {
+            item.result = SubmissionResult{};
+            item.result.student = item.name;
+            item.result.notes.push_back("not graded: the grading worker failed");
+        }
+        report(item);
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rmdir((out + "/.work").c_str());  // when empty: other runs (shards) may still be working there
+
+    int graded = 0, errors = 0;
+    double graded_wall = 0, graded_cpu = 0;
+    for (const auto& item : items) {
+        if (item.graded) ++graded, graded_wall += item.seconds, graded_cpu += item.cpu;
+        errors += !item.ok;
+    }
+    std::printf("Graded %d submissions in %s s with %d jobs (%zu already graded)", graded, format_number(wall).c_str(),
+                jobs, items.size() - graded);
+    if (graded)
+        std::printf(": %s s of wall time and %s s of CPU per submission, %s s per submission overall",
+                    format_number(graded_wall / graded).c_str(), format_number(graded_cpu / graded).c_str(),
+                    format_number(wall / graded).c_str());
+    std::printf("\n");
+
+    if (a.only.empty()) {
+        std::vector<SubmissionResult> results;
+        for (const auto& item : items) results.push_back(item.result);
+        write_file(out + "/class.csv", class_csv(setup, results));
+        write_file(out + "/summary.md", class_summary(setup, results, ignored));
+        // Timings and the date: they change from run to run, so they live apart from the results.
+        char date[64];
+        const std::time_t now = std::time(nullptr);
+        std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+        char host[256] = "";
+        gethostname(host, sizeof host - 1);
+        std::string run = "{\n  \"finished\": " + json_string(date) + ",\n  \"host\": " + json_string(host) +
+                          ",\n  \"jobs\": " + std::to_string(jobs) + ",\n  \"wall_seconds\": " + format_number(wall) +
+                          ",\n  \"graded\": " + std::to_string(graded) + ",\n  \"already_graded\": " +
+                          std::to_string(items.size() - graded) + ",\n  \"submissions\": [";
+        for (std::size_t k = 0; k < items.size(); ++k)
+            run += std::string(k ? ",\n" : "\n") + "    {\"student\": " + json_string(items[k].name) +
+                   ", \"graded_in_this_run\": " + (items[k].graded ? "true" : "false") + ", \"wall_seconds\": " +
+                   format_number(items[k].seconds) + ", \"cpu_seconds\": " + format_number(items[k].cpu) + "}";
+        run += "\n  ]\n}\n";
+        write_file(out + "/run.json", run);
+        std::printf("Results: %s/summary.md, %s/class.csv, %s/results/<student>.json\n", out.c_str(), out.c_str(),
+                    out.c_str());
+    }
+    return errors ? 1 : 0;
+}
+
+// ---- check -------------------------------------------------------------------------------------
+int check(const Args& a) {
+    Setup setup;
+    if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
+    const std::string folder = a.folder.empty() ? setup.root + "/exercises" : absolute(a.folder);
+    if (a.positional.size() > 1) return fail("check takes at most one chapter, topic or exercise");
+    Selection selection;
+    std::string what = "every chapter";
+    if (!a.positional.empty()) {
+        const std::string key = a.positional[0];
+        for (const auto& c : setup.chapters) {
+            if (key == c.label || key == c.slug || key == std::to_string(c.number) ||
+                (key.size() == 2 && key[0] == '0' && key.substr(1) == std::to_string(c.number))) {
+                for (const auto& t : setup.topics)
+                    if (t.chapter == c.label) selection.topics.insert(t.name);
+                what = "Chapter " + std::to_string(c.number);
+            }
+        }
+        for (const auto& t : setup.topics) {
+            if (t.name == key) selection.topics.insert(t.name), what = "exercises/" + t.name + ".cpp";
+            for (const auto& e : t.exercises)
+                if (e.name == key) selection.topics.insert(t.name), selection.exercise = e.name, what = "the exercise " + e.name;
+        }
+        if (selection.topics.empty()) {
+            std::string known;
+            for (const auto& c : setup.chapters) known += " " + c.label;
+            for (const auto& t : setup.topics) {
+                known += "\n  " + t.name + ":";
+                for (const auto& e : t.exercises) known += " " + e.name;
+            }
+            return fail("'" + key + "' is not a chapter, topic or exercise. Chapters:" + known);
+        }
+    }
+    std::printf("Checking %s in %s with the graders (the instructor's grading run uses the same ones)\n", what.c_str(),
+                relative_to_root(setup, folder).c_str());
+    std::fflush(stdout);
+    const std::string dir = a.out.empty() ? setup.dir + "/check" : absolute(a.out);
+    make_dirs(dir);
+    const auto files = collect_files(setup, a.options, folder);
+    const SubmissionResult r = grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
+    write_file(dir + "/results.json", results_json(setup, r));
+    const bool all = print_check(setup, r, relative_to_root(setup, folder));
+    for (const auto& n : r.notes)
+        if (n.find("does not build") != std::string::npos) {
+            std::printf("The compiler's full output is in %s/logs/.\n", relative_to_root(setup, dir).c_str());
+            break;
+        }
+    return all ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) return fail(std::string("no command\n") + usage);
+    const std::string command = argv[1];
+    const Args a = parse(argc, argv);
+    if (command == "manifest") {
+        if (a.topics.empty() || a.points.empty() || a.out.empty()) return fail(std::string("manifest needs --topics, --points and --out\n") + usage);
+        const std::string problem = make_manifest(a.topics, a.points, a.out);
+        return problem.empty() ? 0 : fail(problem);
+    }
+    if (command == "grade") return grade(a);
+    if (command == "check") return check(a);
+    if (command == "-h" || command == "--help" || command == "help") return std::printf("%s", usage), 0;
+    return fail("unknown command '" + command + "'\n" + usage);
+}
