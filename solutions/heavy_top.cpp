@@ -201,11 +201,18 @@ double precession_residual(const HeavyTop& top, const TrialPrecession& p, int n)
     require_positive(top.f, "f = g L mu");
     require_positive(p.alpha, "alpha");
     require_positive(p.beta, "beta");
+    const Vec3 a = require_axis(p.a, "rotation vector a"), b = require_axis(p.b, "precession vector b");
     const double L = 4 * std::numbers::pi / std::min(p.alpha, p.beta);
     double sum = 0;
     for (int j = 0; j < n; ++j) {
+        // euler_vector and torque in one pass, sharing R^a(alpha t): the search calls this a lot.
         const double t = (j + 0.5) * L / n;
-        sum += (euler_vector(top.J, p, t) - top.f * torque(top.k, top.z0, p, t)).squaredNorm();
+        const Mat3 Ra = rotation_about(a, p.alpha * t);
+        const Vec3 bt = Ra.transpose() * b;
+        const Vec3 Omega = p.alpha * a + p.beta * bt, Omega_dot = -p.alpha * p.beta * a.cross(bt);
+        const Vec3 E = top.J * Omega_dot - (top.J * Omega).cross(Omega);
+        const Vec3 T = ((rotation_about(b, p.beta * t) * Ra).transpose() * top.k).cross(top.z0);
+        sum += (E - top.f * T).squaredNorm();
     }
     return std::sqrt(sum / n) / top.f;
 }

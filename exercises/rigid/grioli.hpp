@@ -22,7 +22,7 @@
 
 namespace rigid {
 
-// snippet: moments
+// snippet: grioli_moments
 // The principal moments at O, A < B < C [P, (int.1)], with the gaps B - A and C - B.
 struct Moments {
     double A, B, C;
@@ -39,7 +39,7 @@ Moments moments(double A, double B, double C);
 Moments moments_from_gaps(double A, double B_minus_A, double C_minus_B);
 // end snippet
 
-// snippet: closed_form
+// snippet: grioli_closed_form
 // The root that all of Theorem 1's numbers share [P, (int.3), (int.4), (4.5), (4.11)]:
 //   S = sqrt((C - B)(B - A) + (A + C - B)^2)
 double grioli_root(const Moments& m);
@@ -62,7 +62,7 @@ Vec3 grioli_rotation_vector(const Moments& m);
 Vec3 grioli_vertical(const Moments& m);
 // end snippet
 
-// snippet: precession
+// snippet: grioli_precession
 enum class Sense { ccw, cw };  // sigma = +1, -1
 
 // One of the two regular precessions of Theorem 1, in the inertia frame at t = 0.
@@ -88,7 +88,7 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g);
 BodyState grioli_initial_state(const GrioliPrecession& g);
 // end snippet
 
-// snippet: item_II
+// snippet: grioli_item_II
 // The body placed in a lab frame whose upward vertical is `up` (any finite non-zero vector),
 // by the recipe of Item II [P, Introduction], with its quadrant rule replaced by one that
 // works (see the chapter):
@@ -118,7 +118,7 @@ LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& 
 bool item_II_rule_holds(const Moments& m, const Mat3& R0, const Vec3& k);
 // end snippet
 
-// snippet: integrate
+// snippet: grioli_integrate
 // Theorem 1 checked by integration: the Euler-Poisson equations (3.1)-(3.2) of grioli_top,
 // started from grioli_initial_state and integrated with integrate_gsl over `periods` periods
 // 2 pi / alpha, compared at `samples_per_period` points per period with grioli_rotation.

@@ -36,7 +36,7 @@ struct HeavyTop {
 HeavyTop heavy_top(const Mat3& J, double f, const Vec3& k, const Vec3& z0);
 // end snippet
 
-// snippet: euler_poisson
+// snippet: heavy_top_euler_poisson
 // The right-hand side of the Euler-Poisson equations [P, (3.1), (3.2)]:
 //   J Omega_dot = [J Omega, Omega] + f [R^T k, z(0)],      R_dot = R hat(Omega).
 // Returns the time derivative (Omega_dot, R_dot). The top is taken as valid (build it with
@@ -51,7 +51,7 @@ double heavy_top_energy(const HeavyTop& top, const BodyState& s);
 MatX euler_poisson_jacobian(const HeavyTop& top, const BodyState& s);
 // end snippet
 
-// snippet: trial_precession
+// snippet: heavy_top_trial
 // A trial regular precession R(t) = R^b(beta t) R^a(alpha t) [P, (1.4)]: axes a and b
 // (normalised by the functions that take one), frequencies alpha and beta ([P] takes them
 // > 0; the formulas below hold for any finite values, a negative one turning the other way).
@@ -71,7 +71,7 @@ Vec3 euler_vector(const Mat3& J, const TrialPrecession& p, double t);
 Vec3 torque(const Vec3& k, const Vec3& z0, const TrialPrecession& p, double t);
 // end snippet
 
-// snippet: series
+// snippet: heavy_top_series
 // A trigonometric series with vector coefficients in the frequencies of [P, (3.5)-(3.7)]:
 //   v(t) = constant + cos_alpha cos(alpha t) + sin_alpha sin(alpha t)
 //        + cos_2alpha cos(2 alpha t) + sin_2alpha sin(2 alpha t)
@@ -101,7 +101,7 @@ PrecessionSeries euler_vector_series(const Mat3& J, double alpha, double beta, d
 PrecessionSeries torque_series(const Vec3& k, const Vec3& z0, double alpha, double beta, double b3);
 // end snippet
 
-// snippet: residual
+// snippet: heavy_top_residual
 // How far a trial precession is from solving the Euler equation E = f T [P, (3.4)]: the
 // root mean square of |E(t) - f T(t)| / f over n sample times t_j = (j + 1/2) L / n,
 // j = 0..n-1, spread over L = 4 pi / min(alpha, beta) (two turns of the slower rotation).
@@ -109,7 +109,7 @@ PrecessionSeries torque_series(const Vec3& k, const Vec3& z0, double alpha, doub
 double precession_residual(const HeavyTop& top, const TrialPrecession& p, int n = 24);
 // end snippet
 
-// snippet: search
+// snippet: heavy_top_search
 // A numerical search for regular precessions [P, Sect. 4]: in the lab frame of [P, (3.3)],
 // a = e3 and b = (0, sin gamma, cos gamma), with the angle gamma between a and b and the
 // ratio beta/alpha held fixed, minimise precession_residual (n = 24, f = 1) over
