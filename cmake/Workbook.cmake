@@ -280,13 +280,14 @@ function(workbook_stub_gate)
   add_test(NAME "stub gate: every grading test passes on solutions and fails on the stubs"
            COMMAND stub_gate ${args})
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
-                       PROPERTIES LABELS "gate" TIMEOUT 600)
+                       PROPERTIES LABELS "gate" TIMEOUT 600 RESOURCE_LOCK stub_gate_xml)
   # The gate itself must be able to fail: handed the reference as if it were the stubs,
   # it must find every test "passing on the stubs" and say so.
   list(GET args 0 topic)
   list(GET args 1 reference)
   add_test(NAME "stub gate: fails when a grader passes on its stubs"
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
+  # Both gate tests write stub_gate_<topic>_*.xml in the same folder: never at the same time.
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
-                       LABELS "gate" WILL_FAIL TRUE)
+                       LABELS "gate" WILL_FAIL TRUE RESOURCE_LOCK stub_gate_xml)
 endfunction()

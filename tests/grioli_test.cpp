@@ -305,7 +305,7 @@ TEST_CASE("grioli_initial_state: has R(0) = 1 and Omega(0) = sigma alpha (a + b)
     }
 }
 
-TEST_CASE("place_item_II: puts R_B along b at the angle theta to k and z0 along [b k]") {
+TEST_CASE("place_item_II: puts R_B along b at the angle theta to k and z0 along b x k") {
     for (int n = 0; n < 10; ++n) {
         const Gaps g = random_gaps();
         const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);

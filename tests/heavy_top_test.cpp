@@ -204,7 +204,7 @@ TEST_CASE("euler_poisson_jacobian: matches central differences of the right-hand
     }
 }
 
-TEST_CASE("euler_vector: equals J Omega_dot - [J Omega, Omega] from the derivatives of R(t)") {
+TEST_CASE("euler_vector: equals J Omega_dot - (J Omega) x Omega from the derivatives of R(t)") {
     for (int n = 0; n < 10; ++n) {
         const Mat3 J = random_inertia();
         const Vec3 a = checks::random_unit(), b = checks::random_unit();
@@ -228,7 +228,7 @@ TEST_CASE("euler_vector: rejects a zero axis and a non-finite time") {
     CHECK_THROWS_AS(rigid::euler_vector(Mat3::Identity(), {Vec3::UnitZ(), 1, Vec3::UnitX(), 1}, nan_), std::invalid_argument);
 }
 
-TEST_CASE("torque: equals [R^T k, z0] with R from Eigen's AngleAxis") {
+TEST_CASE("torque: equals (R^T k) x z0 with R from Eigen AngleAxis") {
     for (int n = 0; n < 10; ++n) {
         const Vec3 a = checks::random_unit(), b = checks::random_unit(), k = checks::random_unit(), z0 = checks::random_unit();
         const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(0.2, 3), t = checks::uniform(-5, 5);
@@ -278,7 +278,7 @@ TEST_CASE("euler_vector_series: sums to E for any frequencies including beta = a
     }
 }
 
-TEST_CASE("euler_vector_series: rejects b3 outside (-1, 1) and a non-symmetric J") {
+TEST_CASE("euler_vector_series: rejects |b3| >= 1 and a non-symmetric J") {
     CHECK_THROWS_AS(rigid::euler_vector_series(Mat3::Identity(), 1, 1, 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::euler_vector_series(Mat3::Identity(), 1, 1, nan_), std::invalid_argument);
     Mat3 J = Mat3::Identity();

@@ -128,11 +128,11 @@ int main(int argc, char** argv) {
         fig << "set title 'Smallest residual of E = f T found, asymmetric body (A, B, C) = (" + std::to_string(moments(0)).substr(0, 4) +
                    ", " + std::to_string(moments(1)).substr(0, 4) + ", " + std::to_string(moments(2)).substr(0, 4) + ")'\n"
                "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [20:160]\n"
-               "set xlabel 'angle {/Symbol g} between a and b (degrees)'\nset ylabel 'min RMS |E - fT| / f'\n"
+               "set xlabel 'angle γ between a and b (degrees)'\nset ylabel 'min RMS |E - fT| / f'\n"
                "set xtics 30\nset key bottom left\nset label 1 'Case 3, b_3 = 0: the Grioli precession' at 93, 1e-15 tc rgb '#0072B2'\n";
-        const char* titles[] = {"{/Symbol b}/{/Symbol a} = 1/2 (Case 1)", "{/Symbol b} = {/Symbol a} (Case 3)",
-                                "{/Symbol b}/{/Symbol a} = √2 (Case 1)", "{/Symbol b} = 2{/Symbol a} (Case 2)",
-                                "{/Symbol b} = 3{/Symbol a} (|{/Symbol g}_-| = 2{/Symbol a})"};
+        const char* titles[] = {"β/α = 1/2 (Case 1)", "β = α (Case 3)",
+                                "β/α = √2 (Case 1)", "β = 2α (Case 2)",
+                                "β = 3α (|γ_-| = 2α)"};
         std::string plot = "plot ";
         for (std::size_t r = 0; r < ratios.size(); ++r)
             plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) + " title '" + titles[r] + "'";

@@ -73,15 +73,15 @@ int main(int argc, char** argv) {
         kit::Figure fig(scene, "routh_min_residual.svg", 820, 500);
         fig << "set title 'Precession about the vertical (b = k): smallest residual of E = f T found'\n"
                "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [0:180]\nset xtics 30\n"
-               "set xlabel 'angle {/Symbol g} between the rotation vector a and the vertical (degrees)'\n"
+               "set xlabel 'angle γ between the rotation vector a and the vertical (degrees)'\n"
                "set ylabel 'min RMS |E - fT| / f'\nset key center right\n";
         const char* rt[] = {"1/2", "1", "2"};
         std::string plot = "plot ";
         for (std::size_t r = 0; r < ratios.size(); ++r)
             plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                    " title 'asymmetric, {/Symbol b}/{/Symbol a} = " + rt[r] + "'";
+                    " title 'asymmetric, β/α = " + rt[r] + "'";
         for (std::size_t r = 0; r < ratios.size(); ++r)
-            plot += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) + " dt 2 pt 6 title 'symmetric (A = B), {/Symbol b}/{/Symbol a} = " +
+            plot += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) + " dt 2 pt 6 title 'symmetric (A = B), β/α = " +
                     rt[r] + "'";
         fig << plot + "\n";
         for (std::size_t c = 1; c <= 2 * ratios.size(); ++c) {
