@@ -111,7 +111,7 @@ TEST_CASE("expm1_so3: is the zero matrix at w = 0 and finite near it") {
     CHECK(E.cwiseAbs().maxCoeff() <= 3e-300);
 }
 
-TEST_CASE("expm1_so3: one plus it is a rotation, and w to -w transposes it") {
+TEST_CASE("expm1_so3: one plus it is a rotation and w to -w transposes it") {
     for (int i = 0; i < 50; ++i) {
         const Vec3 w = checks::random_vector(3.0);
         const Mat3 E = rigid::expm1_so3(w);
@@ -122,7 +122,7 @@ TEST_CASE("expm1_so3: one plus it is a rotation, and w to -w transposes it") {
     }
 }
 
-TEST_CASE("dexpinv: inverts the derivative of exp, measured by central differences") {
+TEST_CASE("dexpinv: inverts the derivative of exp measured by central differences") {
     // exp(u)^T d/de exp(u + e x) at e = 0 is hat(dexp_{-u}(x)), so dexpinv(-u, that) = x.
     for (int i = 0; i < 30; ++i) {
         const Vec3 u = checks::random_vector(2.0), x = checks::random_vector();
@@ -133,7 +133,7 @@ TEST_CASE("dexpinv: inverts the derivative of exp, measured by central differenc
     }
 }
 
-TEST_CASE("dexpinv: inverts the closed form of dexp, for small and large u") {
+TEST_CASE("dexpinv: inverts the closed form of dexp for small and large u") {
     // dexp_u(x) = x + (1 - cos t)/t^2 u x x + (t - sin t)/t^3 u x (u x x), t = |u| (series when small).
     for (double size : {1e-9, 1e-5, 1e-3, 0.01, 0.5, 2.0, 5.0}) {
         CAPTURE(size);
@@ -177,7 +177,7 @@ TEST_CASE("combine: keeps the digits of small increments") {
     CHECK((d.E - turn(3e-9)).norm() <= 1e-15 * turn(3e-9).norm());
 }
 
-TEST_CASE("rkmk4_step: one plus E is a rotation, whatever the step") {
+TEST_CASE("rkmk4_step: one plus E is a rotation whatever the step") {
     for (int i = 0; i < 20; ++i) {
         const HeavyTop top = random_top();
         const BodyState s = random_state();
@@ -208,7 +208,7 @@ TEST_CASE("rkmk4_step: converges with order 4 to the Grioli precession") {
     CHECK_NEAR(e1 / e2, 16.0, 2.0);
 }
 
-TEST_CASE("torque_kick: changes Omega by h J^-1 f [R^T k, z(0)] and nothing else") {
+TEST_CASE("torque_kick: changes Omega by h f J^-1 (R^T k) x z(0) and nothing else") {
     for (int i = 0; i < 20; ++i) {
         HeavyTop top = random_top();
         const Mat3 Q = random_rotation();
@@ -249,14 +249,14 @@ TEST_CASE("free_rotation: keeps the angular momentum in space and Omega along it
     }
 }
 
-TEST_CASE("free_rotation: rejects an axis other than 0, 1, 2") {
+TEST_CASE("free_rotation: rejects an axis outside 0..2") {
     const HeavyTop top = random_top();
     const BodyState s = random_state();
     CHECK_THROWS_AS(rigid::free_rotation(top, s, -1, 0.1), std::invalid_argument);
     CHECK_THROWS_AS(rigid::free_rotation(top, s, 3, 0.1), std::invalid_argument);
 }
 
-TEST_CASE("strang_step: is the flows of V, T1, T2, T3, T2, T1, V in that order") {
+TEST_CASE("strang_step: is the flows of V T1 T2 T3 T2 T1 V in that order") {
     const HeavyTop top = random_top();
     const BodyState s = random_state();
     const double h = 0.3;
@@ -275,7 +275,7 @@ TEST_CASE("strang_step: is the flows of V, T1, T2, T3, T2, T1, V in that order")
     CHECK_MAT_NEAR(n.Omega, x.Omega, 1e-14);
 }
 
-TEST_CASE("strang_step: is symmetric, a step of -h undoes a step of h") {
+TEST_CASE("strang_step: is symmetric so that a step of -h undoes a step of h") {
     const HeavyTop top = random_top();
     const BodyState s = random_state();
     const BodyState there = rigid::apply(s, rigid::strang_step(top, s, 0.2));
@@ -303,7 +303,7 @@ TEST_CASE("strang_step: keeps the vertical angular momentum and R on SO(3) over 
     CHECK((s.R.transpose() * s.R - Mat3::Identity()).norm() <= 2e-13);
 }
 
-TEST_CASE("triple_jump: takes the substeps g1 h, g2 h, g1 h, each from the state reached") {
+TEST_CASE("triple_jump: takes the substeps g1 h then g2 h then g1 h each from the state reached") {
     const double g1 = 1 / (2 - std::cbrt(2.0)), g2 = 1 - 2 * g1;
     std::vector<double> hs;
     std::vector<BodyState> from;

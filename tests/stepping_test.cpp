@@ -55,7 +55,7 @@ TEST_CASE("integrate_steps: lands exactly on every output time and counts its st
     CHECK(steps == expected);
 }
 
-TEST_CASE("integrate_steps: an exact stepper gives the exact motion, with either summation") {
+TEST_CASE("integrate_steps: an exact stepper gives the exact motion with either summation") {
     const Vec3 w(0.3, -0.7, 1.1);
     const Mat3 R0 = rot(Vec3(1, 0.5, -0.2));
     for (auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
@@ -84,7 +84,7 @@ TEST_CASE("integrate_steps: compensated summation keeps R^T R = 1 where the plai
     CHECK(plain >= 4 * compensated);
 }
 
-TEST_CASE("integrate_steps: rejects a bad step, bad times and a non-finite state") {
+TEST_CASE("integrate_steps: rejects a bad step or bad times or a non-finite state") {
     const auto ignore = [](double, const BodyState&) {};
     const BodyState s{Vec3(0, 0, 1), Mat3::Identity()};
     const double nan = std::numeric_limits<double>::quiet_NaN();

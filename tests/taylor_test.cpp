@@ -94,7 +94,7 @@ TEST_CASE("integrate_taylor: in long double it agrees with itself at half the st
     CHECK(worst_double >= 1e-16L);  // the same steps in double: round-off of double, 100 times larger
 }
 
-TEST_CASE("integrate_taylor: rejects bad settings, times and state") {
+TEST_CASE("integrate_taylor: rejects bad settings or times or state") {
     const auto ignore = [](double, const rigid::TaylorState<double>&) {};
     const BodyState s0{free_Omega0, Mat3::Identity()};
     const double nan = std::numeric_limits<double>::quiet_NaN();

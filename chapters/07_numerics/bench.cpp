@@ -254,7 +254,7 @@ Reference reference(const Scenario& sc, bool self_check) {
 }
 
 Budget budget(const std::string& name) {
-    if (name == "smoke") return {name, 1, 0.03, 0.1, 20000, 8.0, 1e3, false};
+    if (name == "smoke") return {name, 1, 0.03, 0.15, 20000, 4.0, 100.0, false};
     if (name == "quick") return {name, 3, 0.1, 0.5, 200000, 2.0, 10.0, true};
     if (name == "full") return {name, 5, 5.0, 60.0, 4000000, std::sqrt(2.0), std::sqrt(10.0), true};
     throw std::invalid_argument("unknown budget " + name);

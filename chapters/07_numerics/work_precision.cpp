@@ -164,6 +164,7 @@ int main(int argc, char** argv) {
                     fastest_listed = t, fastest_listed_name = methods[mi].name;
                 if (!bp) {
                     md << "| " << methods[mi].label << " | failed | | | | | | |\n";
+                    summary.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
                     continue;
                 }
                 md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
@@ -192,7 +193,7 @@ int main(int argc, char** argv) {
                << (std::isfinite(t_rk8pd / fastest) ? sci(t_rk8pd / fastest, 2) : "—") << " times faster than rk8pd); "
                << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
         }
-        scene.report.table("summary",
+        scene.report.table("by_method",
                            {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s", "speedup_vs_rk8pd",
                             "orthogonality", "energy_drift", "momentum_drift"},
                            summary, false);
