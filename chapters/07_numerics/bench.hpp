@@ -115,8 +115,9 @@ struct Point {
 };
 
 // The sweep of one method on one scenario: parameters from loose to tight, each run timed
-// (minimum over budget.repeats), stopped by the budget or when the error has not improved for
-// two points in a row (the round-off floor). progress() is called before each run.
+// (minimum over budget.repeats; at least 10 for runs under 5 ms unless the budget asks for 1),
+// stopped by the budget or when the error has not improved for two points in a row (the
+// round-off floor). progress() is called before each run.
 std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference& ref, const Budget& b,
                          const std::function<void(const std::string&)>& progress);
 
