@@ -376,6 +376,7 @@ function(workbook_stub_gate)
   list(GET args 1 reference)
   add_test(NAME "stub gate: fails when a grader passes on its stubs"
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
+  # Both gate tests write stub_gate_<topic>_*.xml in the same folder: never at the same time.
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
                        LABELS "gate" WILL_FAIL TRUE)
   # Both write stub_gate_<topic>_*.xml in the build folder: never at the same time.

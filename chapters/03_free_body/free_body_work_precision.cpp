@@ -28,11 +28,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I"), w0 = o.vector("Omega0");
-        try {
-            rigid::require_principal_moments(I, "--I");
-        } catch (const std::invalid_argument& e) {
-            throw kit::BadInput(e.what());
-        }
+        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
         if (!(w0.norm() > 0)) throw kit::BadInput("--Omega0 must not be zero");
         const double T = o.real("T");
         const int repeats = static_cast<int>(o.integer("repeats"));

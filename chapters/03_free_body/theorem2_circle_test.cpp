@@ -57,11 +57,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I");
-        try {
-            rigid::require_principal_moments(I, "--I");
-        } catch (const std::invalid_argument& e) {
-            throw kit::BadInput(e.what());
-        }
+        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
         const auto [lo, mid, hi] = scene3::sorted_axes(I);
         if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct (an asymmetric body)");
         const double E = o.real("energy"), tol = o.real("tol");

@@ -1,0 +1,159 @@
+// Chapter 4 scene: the trigonometric series of [P, (3.5), (3.6)] for the Euler vector E and
+// the torque T along a trial precession, checked coefficient by coefficient.
+//
+// E(t) and T(t) are evaluated directly (rigid::euler_vector, rigid::torque) at N instants of
+// one common period and decomposed numerically on the eleven functions of the series (least
+// squares; with alpha = 3, beta = 5 every frequency 0, 2, 3, 5, 6, 8 is resolved on [0, 2 pi)).
+// Each coefficient vector is compared with [P]'s printed one and with the corrected one of
+// rigid::euler_vector_series / rigid::torque_series.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "rigid/heavy_top.hpp"
+#include "scene.hpp"
+
+using rigid::Mat3;
+using rigid::PrecessionSeries;
+using rigid::Vec3;
+
+namespace {
+
+const char* names[11] = {"constant", "cos(alpha t)",  "sin(alpha t)",  "cos(2 alpha t)", "sin(2 alpha t)", "cos(beta t)",
+                         "sin(beta t)", "cos(gamma+ t)", "sin(gamma+ t)", "cos(gamma- t)", "sin(gamma- t)"};
+
+std::vector<Vec3> rows_of(const PrecessionSeries& s) {
+    return {s.constant, s.cos_alpha, s.sin_alpha, s.cos_2alpha, s.sin_2alpha, s.cos_beta,
+            s.sin_beta, s.cos_plus,  s.sin_plus,  s.cos_minus,  s.sin_minus};
+}
+
+// snippet: ch04_printed_series
+// [P, (3.5)] as printed, with its constant's factor A = (beta b2)^2/2 - (alpha + beta b3)^2.
+PrecessionSeries printed_E(const Mat3& J, double alpha, double beta, double b3) {
+    const double b2 = std::sqrt(1 - b3 * b3), w = alpha + beta * b3, bb = beta * b2, half = bb * bb / 2;
+    PrecessionSeries E;
+    E.constant = (half - w * w) * Vec3(J(1, 2), -J(0, 2), 0);
+    E.cos_alpha = bb * Vec3(w * (J(2, 2) - J(1, 1)) + alpha * J(0, 0), (2 * alpha + beta * b3) * J(0, 1), -beta * b3 * J(0, 2));
+    E.sin_alpha = bb * Vec3(-(2 * alpha + beta * b3) * J(0, 1), w * (J(0, 0) - J(2, 2)) - alpha * J(1, 1), beta * b3 * J(1, 2));
+    E.cos_2alpha = half * Vec3(J(1, 2), J(0, 2), -2 * J(0, 1));
+    E.sin_2alpha = half * Vec3(J(0, 2), -J(1, 2), 2 * (J(1, 1) - J(0, 0)));
+    return E;
+}
+
+// [P, (3.6)] as printed: its last two terms both multiply cos(gamma_- t).
+PrecessionSeries printed_T(const Vec3& k, const Vec3& z, double b3) {
+    const double b2 = std::sqrt(1 - b3 * b3), n = b2 * k.y() + b3 * k.z(), p = b3 * k.y() - b2 * k.z();
+    PrecessionSeries T;
+    T.constant = b3 * n * Vec3(-z.y(), z.x(), 0);
+    T.cos_alpha = b2 * n * Vec3(z.z(), 0, -z.x());
+    T.sin_alpha = b2 * n * Vec3(0, -z.z(), z.y());
+    T.cos_beta = b2 * p * Vec3(z.y(), -z.x(), 0);
+    T.cos_plus = (1 + b3) * p / 2 * Vec3(z.z(), 0, -z.x());
+    T.sin_plus = (1 + b3) * p / 2 * Vec3(0, -z.z(), z.y());
+    T.cos_minus = (1 + b3) * p / 2 * Vec3(-z.z(), 0, z.x()) + (1 - b3) * p / 2 * Vec3(0, z.z(), -z.y());
+    return T;
+}
+// end snippet
+
+// snippet: ch04_fourier_fit
+// The numerical decomposition: least squares of v(t_j), t_j = 2 pi j / N, on the eleven
+// functions of the series. Row i of the result is the coefficient vector of function i.
+template <class F>
+std::vector<Vec3> fourier_fit(F v, double alpha, double beta, int N) {
+    Eigen::MatrixXd G(N, 11), Y(N, 3);
+    for (int j = 0; j < N; ++j) {
+        const double t = 2 * std::numbers::pi * j / N, gp = (alpha + beta) * t, gm = (alpha - beta) * t;
+        G.row(j) << 1, std::cos(alpha * t), std::sin(alpha * t), std::cos(2 * alpha * t), std::sin(2 * alpha * t),
+            std::cos(beta * t), std::sin(beta * t), std::cos(gp), std::sin(gp), std::cos(gm), std::sin(gm);
+        Y.row(j) = v(t).transpose();
+    }
+    const Eigen::MatrixXd X = G.colPivHouseholderQr().solve(Y);
+    std::vector<Vec3> rows;
+    for (int i = 0; i < 11; ++i) rows.push_back(X.row(i).transpose());
+    return rows;
+}
+// end snippet
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("heavy_top_series", "Chapter 4: the series (3.5)-(3.6) for E and T against a numerical Fourier decomposition");
+    opts.real("b3", 0.37, "third component of the precession vector b = (0, b2, b3), [P, (3.3)]", kit::between(-0.99, 0.99))
+        .real("k-angle", 0.8, "direction of k = (0, cos, sin) in the plane of a and b (radians)", kit::finite())
+        .vector("z0", Vec3(0.3, -0.5, 0.8), "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector())
+        .integer("samples", 64, "samples N over the period 2 pi (at least 2 * 8 + 1 = 17 resolve every frequency)", 32, 4096);
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const double b3 = o.real("b3"), b2 = std::sqrt(1 - b3 * b3), phi = o.real("k-angle");
+        const int N = static_cast<int>(o.integer("samples"));
+        const double alpha = 3, beta = 5;  // commensurate: one common period 2 pi
+        Mat3 J;                            // a general symmetric J: the lab axes are not inertia axes
+        J << 2.1, 0.3, -0.2, 0.3, 1.7, 0.45, -0.2, 0.45, 2.6;
+        const Vec3 a = Vec3::UnitZ(), b(0, b2, b3), k(0, std::cos(phi), std::sin(phi));
+        const Vec3 z0 = o.vector("z0").normalized();
+        const rigid::TrialPrecession p{a, alpha, b, beta};
+
+        std::vector<Vec3> numE, numT;
+        PrecessionSeries serE, serT;
+        const double run_time = kit::min_time([&] {
+            numE = fourier_fit([&](double t) { return rigid::euler_vector(J, p, t); }, alpha, beta, N);
+            numT = fourier_fit([&](double t) { return rigid::torque(k, z0, p, t); }, alpha, beta, N);
+            serE = rigid::euler_vector_series(J, alpha, beta, b3);
+            serT = rigid::torque_series(k, z0, alpha, beta, b3);
+        }, 3);
+        const auto corE = rows_of(serE), corT = rows_of(serT);
+        const auto prE = rows_of(printed_E(J, alpha, beta, b3)), prT = rows_of(printed_T(k, z0, b3));
+
+        double scaleE = 0, scaleT = 0;
+        for (int i = 0; i < 11; ++i) scaleE = std::max(scaleE, numE[i].norm()), scaleT = std::max(scaleT, numT[i].norm());
+        double worst_corrected = 0;
+        std::vector<std::vector<double>> table, figE, figT;
+        for (int i = 0; i < 11; ++i) {
+            const double pe = (prE[i] - numE[i]).norm() / scaleE, ce = (corE[i] - numE[i]).norm() / scaleE;
+            const double pt = (prT[i] - numT[i]).norm() / scaleT, ct = (corT[i] - numT[i]).norm() / scaleT;
+            worst_corrected = std::max({worst_corrected, ce, ct});
+            table.push_back({double(i), pe, ce, pt, ct});
+            figE.push_back({double(i), std::max(pe, 1e-17), std::max(ce, 1e-17)});
+            figT.push_back({double(i), std::max(pt, 1e-17), std::max(ct, 1e-17)});
+            if (pe > 1e-10)
+                scene.report.note("(3.5) " + std::string(names[i]) + ": printed (" + std::to_string(prE[i].x()) + ", " +
+                                  std::to_string(prE[i].y()) + ", " + std::to_string(prE[i].z()) + "), numerical (" +
+                                  std::to_string(numE[i].x()) + ", " + std::to_string(numE[i].y()) + ", " +
+                                  std::to_string(numE[i].z()) + ")");
+            if (pt > 1e-10)
+                scene.report.note("(3.6) " + std::string(names[i]) + ": printed (" + std::to_string(prT[i].x()) + ", " +
+                                  std::to_string(prT[i].y()) + ", " + std::to_string(prT[i].z()) + "), numerical (" +
+                                  std::to_string(numT[i].x()) + ", " + std::to_string(numT[i].y()) + ", " +
+                                  std::to_string(numT[i].z()) + ")");
+        }
+        scene.report.headline("max over the 22 coefficient vectors of |corrected - numerical| / largest coefficient",
+                              worst_corrected, run_time);
+        scene.report.add("alpha", alpha);
+        scene.report.add("beta", beta);
+        scene.report.add("b", b);
+        scene.report.add("k", k);
+        scene.report.add("z0", z0);
+        scene.report.add("samples", static_cast<long>(N));
+        scene.report.table("coefficients", {"term", "E_printed", "E_corrected", "T_printed", "T_corrected"}, table);
+        scene.report.note("terms: 0 constant, 1-2 cos/sin(alpha t), 3-4 cos/sin(2 alpha t), 5-6 cos/sin(beta t), "
+                          "7-8 cos/sin(gamma+ t), 9-10 cos/sin(gamma- t); errors relative to the largest coefficient");
+
+        kit::Figure fig(scene, "series_check.svg", 860, 520);
+        fig << "set title 'The series (3.5) for E and (3.6) for T, coefficient by coefficient'\n"
+               "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:10]\n"
+               "set ylabel '|coefficient - numerical| / largest coefficient'\n"
+               "set xtics ('const' 0, 'cos αt' 1, 'sin αt' 2, 'cos 2αt' 3, "
+               "'sin 2αt' 4, 'cos βt' 5, 'sin βt' 6, 'cos γ_+t' 7, "
+               "'sin γ_+t' 8, 'cos γ_-t' 9, 'sin γ_-t' 10) rotate by -35\n"
+               "set xrange [-0.6:10.6]\nset key top left\n"
+               "plot '-' using ($1-0.2):2 with impulses lw 6 lc rgb '#D55E00' title 'E, as printed in [P]', "
+               "'-' using ($1-0.2):3 with points ls 1 pt 7 ps 1.0 title 'E, corrected', "
+               "'-' using ($1+0.2):2 with impulses lw 6 lc rgb '#E69F00' title 'T, as printed in [P]', "
+               "'-' using ($1+0.2):3 with points ls 3 pt 9 ps 1.2 title 'T, corrected'\n";
+        fig.data(figE).data(figE).data(figT).data(figT);
+        fig.finish();
+    });
+}

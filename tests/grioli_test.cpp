@@ -1,0 +1,399 @@
+// Graders for Chapter 5, Lemma 2 and Theorem 1 (rigid/grioli.hpp). Each test name starts with
+// the exercise it grades; each cross-checks against an independent computation: long double
+// arithmetic, the circular sections of the inertia ellipsoid, the Euler equation E = f T
+// evaluated here along R(t) with Eigen's AngleAxis and derivatives of R itself, and the
+// placement's geometry in the lab.
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "checks.hpp"
+#include "rigid/grioli.hpp"
+
+using rigid::Mat3;
+using rigid::Sense;
+using rigid::Vec3;
+using std::numbers::pi;
+
+namespace {
+
+const double nan_ = std::numeric_limits<double>::quiet_NaN();
+const double inf_ = std::numeric_limits<double>::infinity();
+
+Mat3 Rot(const Vec3& axis, double phi) { return Eigen::AngleAxisd(phi, axis.normalized()).toRotationMatrix(); }
+
+Mat3 skew(const Vec3& w) {
+    Mat3 S;
+    S << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+    return S;
+}
+
+Vec3 unskew(const Mat3& W) { return 0.5 * Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); }
+
+// The message of the std::invalid_argument that f throws, or a note saying what happened.
+template <class F>
+std::string message_of(F f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    } catch (...) {
+        return "(another exception)";
+    }
+    return "(no exception)";
+}
+
+// Random moments A < B < C with A + B >= C.
+struct Gaps {
+    double A, BA, CB;
+};
+Gaps random_gaps() {
+    const double A = checks::uniform(0.5, 2), BA = checks::uniform(0.01, 1.5), CB = checks::uniform(0.01, 1) * A;
+    return {A, BA, CB};
+}
+
+// Long double references, from the gaps.
+long double S_ld(const Gaps& g) {
+    const long double A = g.A, BA = g.BA, CB = g.CB;
+    return std::sqrt(CB * BA + (A + CB) * (A + CB));
+}
+
+double rel(double x, long double ref) { return static_cast<double>(std::abs((x - ref) / ref)); }
+
+// max over t of |E - f T| along R(t) = R^b(s alpha t) R^a(s alpha t) (s = +-1), everything
+// computed here: Omega and its derivative from the derivatives of R itself.
+double euler_residual(const Mat3& J, double f, const Vec3& k, const Vec3& z0, const Vec3& a, const Vec3& b, double alpha) {
+    double worst = 0;
+    for (int j = 0; j < 16; ++j) {
+        const double t = (j + 0.3) * 2 * pi / alpha / 16;
+        const Mat3 Rb = Rot(b, alpha * t), Ra = Rot(a, alpha * t), A = skew(a.normalized()), B = skew(b.normalized());
+        const Mat3 R = Rb * Ra;
+        const Mat3 R1 = alpha * (B * R + Rb * A * Ra);
+        const Mat3 R2 = alpha * alpha * (B * B * R + 2 * B * Rb * A * Ra + Rb * A * A * Ra);
+        const Vec3 W = unskew(R.transpose() * R1), Wd = unskew(R.transpose() * R2);
+        const Vec3 E = J * Wd - (J * W).cross(W), T = (R.transpose() * k).cross(z0);
+        worst = std::max(worst, (E - f * T).norm());
+    }
+    return worst;
+}
+
+double sigma(Sense s) { return s == Sense::ccw ? 1.0 : -1.0; }
+
+}  // namespace
+
+TEST_SUITE("ch05_grioli_precession") {
+
+TEST_CASE("moments: keeps A B C and the gaps B - A and C - B") {
+    const rigid::Moments m = rigid::moments(1.0, 1.5, 2.25);
+    CHECK(m.A == 1.0);
+    CHECK(m.B == 1.5);
+    CHECK(m.C == 2.25);
+    CHECK(m.B_minus_A == 0.5);
+    CHECK(m.C_minus_B == 0.75);
+    // The flat limit A + B = C is a body (a lamina).
+    CHECK(rigid::moments(1.0, 2.0, 3.0).C_minus_B == 1.0);
+}
+
+TEST_CASE("moments: rejects each broken rule with a message naming it") {
+    CHECK(message_of([] { rigid::moments(2, 1, 2.5); }).find("A < B") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(1, 1, 1.5); }).find("A < B") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(1, 2, 2); }).find("B < C") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(1, 2, 3.5); }).find("A + B >= C") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(-1, 2, 2.5); }).find("> 0") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(0, 2, 2.5); }).find("> 0") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(1, nan_, 2.5); }).find("finite") != std::string::npos);
+    CHECK(message_of([] { rigid::moments(1, 2, inf_); }).find("finite") != std::string::npos);
+}
+
+TEST_CASE("moments_from_gaps: keeps the gaps exactly as given") {
+    const rigid::Moments m = rigid::moments_from_gaps(1.0, 1e-9, 0.7);
+    CHECK(m.B_minus_A == 1e-9);
+    CHECK(m.C_minus_B == 0.7);
+    CHECK(m.A == 1.0);
+    CHECK_NEAR(m.B, 1.0 + 1e-9, 2.3e-16);
+    CHECK_NEAR(m.C, 1.7 + 1e-9, 4.5e-16);
+    // B - A formed from the rounded B would have lost seven digits.
+    CHECK(std::abs((m.B - m.A) - 1e-9) > 1e-17);
+}
+
+TEST_CASE("moments_from_gaps: rejects gaps <= 0 and C - B > A") {
+    CHECK(message_of([] { rigid::moments_from_gaps(1, 0, 0.5); }).find("A < B") != std::string::npos);
+    CHECK(message_of([] { rigid::moments_from_gaps(1, 0.5, -1e-9); }).find("B < C") != std::string::npos);
+    CHECK(message_of([] { rigid::moments_from_gaps(1, 0.5, 1.5); }).find("A + B >= C") != std::string::npos);
+    CHECK(message_of([] { rigid::moments_from_gaps(nan_, 0.5, 0.5); }).find("finite") != std::string::npos);
+    CHECK(message_of([] { rigid::moments_from_gaps(-1, 0.5, 0.5); }).find("> 0") != std::string::npos);
+}
+
+TEST_CASE("grioli_root: equals the long double value and (4.5) in the notation I_(n-m)") {
+    for (int n = 0; n < 50; ++n) {
+        const Gaps g = random_gaps();
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        CHECK(rel(rigid::grioli_root(m), S_ld(g)) <= 4e-16);
+        // [P, (4.5)]: f / alpha^2 = sqrt(I_(3-2) I_(2-1) + (I_(3-2) + I_1)^2) with I = (A, B, C).
+        const double I32 = m.C - m.B, I21 = m.B - m.A;
+        CHECK_NEAR(rigid::grioli_root(m), std::sqrt(I32 * I21 + (I32 + m.A) * (I32 + m.A)), 1e-14);
+    }
+}
+
+TEST_CASE("grioli_root: keeps its digits when B - A or C - B is 1e-9 of C - A") {
+    for (Gaps g : {Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 1e-12, 1e-12}}) {
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        CHECK(rel(rigid::grioli_root(m), S_ld(g)) <= 4e-16);
+    }
+}
+
+TEST_CASE("grioli_alpha: alpha^2 S = f for f from 1e-6 to 1e6") {
+    const Gaps g = random_gaps();
+    const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+    for (double f : {1e-6, 1e-3, 1.0, 37.0, 1e6}) {
+        const long double alpha = std::sqrt(static_cast<long double>(f) / S_ld(g));
+        CAPTURE(f);
+        CHECK(rel(rigid::grioli_alpha(m, f), alpha) <= 4e-16);
+    }
+}
+
+TEST_CASE("grioli_alpha: rejects f <= 0 and a non-finite f") {
+    const rigid::Moments m = rigid::moments(1, 2, 2.5);
+    CHECK_THROWS_AS(rigid::grioli_alpha(m, 0.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::grioli_alpha(m, -1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::grioli_alpha(m, nan_), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::grioli_alpha(m, inf_), std::invalid_argument);
+}
+
+TEST_CASE("grioli_theta: has cos theta = (A + C - B)/S and keeps the digits of a tiny theta") {
+    for (Gaps g : {random_gaps(), random_gaps(), Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 1e-12, 1e-12}}) {
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const long double A = g.A, BA = g.BA, CB = g.CB;
+        const long double theta = std::atan2(std::sqrt(CB * BA), A + CB);
+        CAPTURE(g.BA);
+        CAPTURE(g.CB);
+        CHECK(rel(rigid::grioli_theta(m), theta) <= 1e-15);
+        CHECK_NEAR(std::cos(rigid::grioli_theta(m)), (m.A + m.C_minus_B) / rigid::grioli_root(m), 2e-16);
+    }
+}
+
+TEST_CASE("grioli_rotation_vector: is the normal of a circular section of the inertia ellipsoid") {
+    for (int n = 0; n < 20; ++n) {
+        const Gaps g = random_gaps();
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const Vec3 a = rigid::grioli_rotation_vector(m);
+        CHECK_NEAR(a.norm(), 1.0, 2e-16);
+        CHECK(a.x() > 0);
+        CHECK(a.y() == 0.0);
+        CHECK(a.z() < 0);
+        // The plane orthogonal to a cuts the ellipsoid x.Jx = 1 in a circle: J restricted to
+        // that plane is B times the identity.
+        const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
+        const Vec3 u = Vec3::UnitY(), v = a.cross(u);
+        CHECK_NEAR(u.dot(J * u), m.B, 1e-15);
+        CHECK_NEAR(v.dot(J * v), m.B, 1e-14);
+        CHECK_NEAR(u.dot(J * v), 0.0, 1e-15);
+    }
+}
+
+TEST_CASE("grioli_rotation_vector: keeps its digits for a nearly symmetric body") {
+    for (Gaps g : {Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}}) {
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const long double CA = static_cast<long double>(g.BA) + g.CB;
+        const Vec3 a = rigid::grioli_rotation_vector(m);
+        CHECK(rel(a.x(), std::sqrt(g.BA / CA)) <= 4e-16);
+        CHECK(rel(a.z(), -std::sqrt(g.CB / CA)) <= 4e-16);
+    }
+}
+
+TEST_CASE("grioli_vertical: is a unit vector orthogonal to a with k_B = cos theta") {
+    for (Gaps g : {random_gaps(), random_gaps(), Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 0.5, 1.0}}) {
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const Vec3 k = rigid::grioli_vertical(m), a = rigid::grioli_rotation_vector(m);
+        CHECK_NEAR(k.norm(), 1.0, 3e-16);
+        CHECK_NEAR(k.dot(a), 0.0, 1e-16);
+        CHECK_NEAR(k.y(), std::cos(rigid::grioli_theta(m)), 2e-16);
+        CHECK(k.x() > 0);
+        CHECK(k.z() > 0);
+    }
+}
+
+TEST_CASE("grioli_vertical: with a and alpha it makes E = f T hold along R^b(alpha t) R^a(alpha t)") {
+    for (int n = 0; n < 20; ++n) {
+        const Gaps g = random_gaps();
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const double f = checks::uniform(0.1, 10);
+        const Vec3 a = rigid::grioli_rotation_vector(m), k = rigid::grioli_vertical(m);
+        const double alpha = rigid::grioli_alpha(m, f);
+        const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
+        CHECK(euler_residual(J, f, k, a, a, Vec3::UnitY(), alpha) <= 1e-13 * f);
+        // A vertical tilted by 1e-3 is not a precession any more.
+        CHECK(euler_residual(J, f, Rot(a, 1e-3) * k, a, a, Vec3::UnitY(), alpha) >= 1e-5 * f);
+    }
+}
+
+TEST_CASE("grioli_precession: both senses share alpha theta a b k and z0 = a") {
+    const rigid::Moments m = rigid::moments(1.0, 1.6, 2.3);
+    const rigid::GrioliPrecession p = rigid::grioli_precession(m, 2.0, Sense::ccw);
+    const rigid::GrioliPrecession q = rigid::grioli_precession(m, 2.0, Sense::cw);
+    CHECK(p.sense == Sense::ccw);
+    CHECK(q.sense == Sense::cw);
+    for (const auto& g : {p, q}) {
+        CHECK_NEAR(g.f, 2.0, 0.0);
+        CHECK_NEAR(g.alpha, std::sqrt(2.0 / std::sqrt(0.7 * 0.6 + 1.7 * 1.7)), 1e-15);
+        CHECK_NEAR(g.theta, std::atan2(std::sqrt(0.7 * 0.6), 1.7), 1e-15);
+        CHECK_MAT_NEAR(g.a, Vec3(std::sqrt(0.6 / 1.3), 0, -std::sqrt(0.7 / 1.3)), 1e-15);
+        CHECK_MAT_NEAR(g.b, Vec3::UnitY(), 0.0);
+        CHECK_MAT_NEAR(g.z0, g.a, 0.0);
+        CHECK_MAT_NEAR(g.k, rigid::grioli_vertical(m), 0.0);
+    }
+}
+
+TEST_CASE("grioli_precession: both senses solve the Euler equation for random inertia sets") {
+    for (int n = 0; n < 20; ++n) {
+        const Gaps g = random_gaps();
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const double f = checks::uniform(0.1, 10);
+        const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
+        for (Sense s : {Sense::ccw, Sense::cw}) {
+            const rigid::GrioliPrecession p = rigid::grioli_precession(m, f, s);
+            // R^b(-alpha t) R^a(-alpha t) = R^(-b)(alpha t) R^(-a)(alpha t).
+            CHECK(euler_residual(J, f, p.k, p.z0, sigma(s) * p.a, sigma(s) * p.b, p.alpha) <= 1e-13 * f);
+        }
+    }
+}
+
+TEST_CASE("grioli_rotation: is R^b(sigma alpha t) R^a(sigma alpha t) and returns to 1 after a period") {
+    const rigid::Moments m = rigid::moments(1.0, 1.4, 2.1);
+    for (Sense s : {Sense::ccw, Sense::cw}) {
+        const rigid::GrioliPrecession p = rigid::grioli_precession(m, 1.5, s);
+        for (double t : {0.0, 0.7, 3.1}) {
+            const double phi = sigma(s) * p.alpha * t;
+            CHECK_MAT_NEAR(rigid::grioli_rotation(p, t), Rot(p.b, phi) * Rot(p.a, phi), 1e-15);
+        }
+        CHECK_MAT_NEAR(rigid::grioli_rotation(p, 2 * pi / p.alpha), Mat3::Identity(), 1e-14);
+    }
+}
+
+TEST_CASE("grioli_angular_velocity: equals vee(R^T R') from a central difference of R(t)") {
+    const rigid::Moments m = rigid::moments(1.0, 1.4, 2.1);
+    for (Sense s : {Sense::ccw, Sense::cw}) {
+        const rigid::GrioliPrecession p = rigid::grioli_precession(m, 1.5, s);
+        const double h = 1e-5;
+        for (double t : {0.0, 0.7, 3.1}) {
+            auto R = [&](double u) -> Mat3 { return Rot(p.b, sigma(s) * p.alpha * u) * Rot(p.a, sigma(s) * p.alpha * u); };
+            const Vec3 fd = unskew(R(t).transpose() * (R(t + h) - R(t - h)) / (2 * h));
+            CHECK_MAT_NEAR(rigid::grioli_angular_velocity(p, t), fd, 1e-9);
+        }
+    }
+}
+
+TEST_CASE("grioli_top: is diag(A B C) with the precession's f k and z0") {
+    const rigid::Moments m = rigid::moments(1.0, 1.4, 2.1);
+    const rigid::GrioliPrecession p = rigid::grioli_precession(m, 1.5, Sense::ccw);
+    const rigid::HeavyTop top = rigid::grioli_top(m, p);
+    CHECK_MAT_NEAR(top.J, Vec3(1.0, 1.4, 2.1).asDiagonal().toDenseMatrix(), 0.0);
+    CHECK_NEAR(top.f, 1.5, 0.0);
+    CHECK_MAT_NEAR(top.k, p.k, 2e-16);
+    CHECK_MAT_NEAR(top.z0, p.a, 2e-16);
+}
+
+TEST_CASE("grioli_initial_state: has R(0) = 1 and Omega(0) = sigma alpha (a + b)") {
+    const rigid::Moments m = rigid::moments(1.0, 1.4, 2.1);
+    for (Sense s : {Sense::ccw, Sense::cw}) {
+        const rigid::GrioliPrecession p = rigid::grioli_precession(m, 1.5, s);
+        const rigid::BodyState s0 = rigid::grioli_initial_state(p);
+        CHECK_MAT_NEAR(s0.R, Mat3::Identity(), 0.0);
+        CHECK_MAT_NEAR(s0.Omega, sigma(s) * p.alpha * (p.a + p.b), 1e-15);
+    }
+}
+
+TEST_CASE("place_item_II: puts R_B along b at the angle theta to k and z0 along b x k") {
+    for (int n = 0; n < 10; ++n) {
+        const Gaps g = random_gaps();
+        const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
+        const Vec3 up = checks::random_vector(2), toward = checks::random_unit();
+        const Vec3 k = up.normalized();
+        const rigid::LabPlacement p = rigid::place_item_II(m, 1.0, Sense::ccw, up, toward);
+        CHECK_NEAR((p.R0.transpose() * p.R0 - Mat3::Identity()).norm(), 0.0, 1e-14);
+        CHECK_NEAR(p.R0.determinant(), 1.0, 1e-14);
+        CHECK_MAT_NEAR(p.k, k, 1e-15);
+        CHECK_MAT_NEAR(p.R0.col(1), p.b, 1e-15);                          // R_B along b
+        CHECK_NEAR(std::atan2(p.b.cross(k).norm(), p.b.dot(k)), rigid::grioli_theta(m), 1e-13);
+        CHECK_MAT_NEAR(p.a, p.b.cross(k).normalized(), 1e-13);            // a along [b, k]
+        CHECK_MAT_NEAR(p.z0, p.a, 1e-13);                                  // z(0) = +a
+        // The tilt happened in the plane of k and `toward`: b lies in it.
+        CHECK_NEAR(p.b.dot(k.cross(toward).normalized()), 0.0, 1e-13);
+        // In the body frame the vertical is the k of (4.11).
+        CHECK_MAT_NEAR(p.R0.transpose() * k, rigid::grioli_vertical(m), 1e-13);
+    }
+}
+
+TEST_CASE("place_item_II: the placed body precesses regularly in the lab in both senses") {
+    const rigid::Moments m = rigid::moments(1.0, 1.7, 2.4);
+    const double f = 3.0;
+    for (Sense s : {Sense::ccw, Sense::cw}) {
+        const rigid::LabPlacement p = rigid::place_item_II(m, f, s, Vec3(0.2, -0.3, 1.0), Vec3(1, 1, 0));
+        const Mat3 J_lab = p.R0 * Vec3(m.A, m.B, m.C).asDiagonal() * p.R0.transpose();
+        CHECK(euler_residual(J_lab, f, p.k, p.z0, sigma(s) * p.a, sigma(s) * p.b, p.alpha) <= 1e-12);
+        CHECK_MAT_NEAR(p.Omega0, sigma(s) * p.alpha * p.R0.transpose() * (p.a + p.b), 1e-14);
+        CHECK_NEAR(p.alpha, std::sqrt(f / std::sqrt(0.7 * 0.7 + 1.7 * 1.7)), 1e-15);
+    }
+    CHECK_THROWS_AS(rigid::place_item_II(m, f, Sense::ccw, Vec3::UnitZ(), Vec3(0, 0, 2)), std::invalid_argument);
+}
+
+TEST_CASE("item_II_rule_holds: accepts the two placements that precess and rejects the two that do not") {
+    const rigid::Moments m = rigid::moments(1.0, 1.5, 2.2);
+    const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
+    const Vec3 z = rigid::grioli_rotation_vector(m), uB = Vec3::UnitY();
+    const double theta = rigid::grioli_theta(m), f = 1.0, alpha = rigid::grioli_alpha(m, f);
+    // Lab: k = e3, b tilted by theta toward e1, a = [b, k] / |[b, k]|.
+    const Vec3 k = Vec3::UnitZ(), b(std::sin(theta), 0, std::cos(theta)), a = b.cross(k).normalized();
+    int accepted = 0;
+    for (int s1 : {1, -1})
+        for (int s2 : {1, -1}) {
+            // The body with R_B along s1 b and z(0) along s2 a.
+            Mat3 body, lab;
+            body << uB, z, uB.cross(z);
+            lab << s1 * b, s2 * a, (s1 * b).cross(s2 * a);
+            const Mat3 R0 = lab * body.transpose();
+            const Mat3 J_lab = R0 * J * R0.transpose();
+            // It precesses iff R^b(alpha t) R^(z0)(alpha t) solves E = f T, z0 = R0 z.
+            const bool precesses = euler_residual(J_lab, f, k, R0 * z, R0 * z, b, alpha) <= 1e-12;
+            CAPTURE(s1);
+            CAPTURE(s2);
+            CHECK(rigid::item_II_rule_holds(m, R0, k) == precesses);
+            accepted += precesses;
+        }
+    CHECK(accepted == 2);
+}
+
+TEST_CASE("integrate_grioli: follows Theorem 1 for 10 periods in both senses") {
+    const rigid::Moments m = rigid::moments(1.0, 1.5, 2.2);
+    for (Sense s : {Sense::ccw, Sense::cw}) {
+        const rigid::GrioliPrecession p = rigid::grioli_precession(m, 2.0, s);
+        const rigid::PrecessionCheck c = rigid::integrate_grioli(m, p, 10, 8, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
+        CAPTURE(c.max_rotation_error);
+        CHECK(c.max_rotation_error <= 1e-9);
+        CHECK(c.max_omega_error <= 1e-9);
+        CHECK(c.max_energy_drift <= 1e-10);
+        CHECK(c.orthogonality <= 1e-10);
+        CHECK(c.stats.rhs_calls > 100);
+    }
+}
+
+TEST_CASE("integrate_grioli: measures the departure of a state that does not precess") {
+    const rigid::Moments m = rigid::moments(1.0, 1.5, 2.2);
+    rigid::GrioliPrecession p = rigid::grioli_precession(m, 2.0, Sense::ccw);
+    p.k = Rot(Vec3::UnitX(), 0.05) * p.k;  // the wrong vertical
+    const rigid::PrecessionCheck c = rigid::integrate_grioli(m, p, 3, 8, {.method = "rk8pd", .rel_tol = 1e-10, .abs_tol = 1e-10});
+    CHECK(c.max_rotation_error >= 1e-2);
+    CHECK(c.max_rotation_error <= pi);
+}
+
+TEST_CASE("integrate_grioli: gives an implicit method the Jacobian") {
+    const rigid::Moments m = rigid::moments(1.0, 1.5, 2.2);
+    const rigid::GrioliPrecession p = rigid::grioli_precession(m, 2.0, Sense::cw);
+    const rigid::PrecessionCheck c = rigid::integrate_grioli(m, p, 2, 4, {.method = "bsimp", .rel_tol = 1e-10, .abs_tol = 1e-10});
+    CHECK(c.max_rotation_error <= 1e-7);
+    CHECK(c.stats.jacobian_calls > 0);
+}
+
+}  // TEST_SUITE
