@@ -112,8 +112,10 @@ int main(int argc, char** argv) {
                 prev = a;
                 phi.push_back(a + turn);
             }
-            scene.report.add("precession_rate_measured", slope(fine, phi), "d(azimuth about B)/dt, counter-clockwise > 0");
+            const double rate = slope(fine, phi);
+            scene.report.add("precession_rate_measured", rate, "d(azimuth about B)/dt, counter-clockwise > 0");
             scene.report.add("precession_rate_predicted", omega_L, "-(e/mc)|B|");
+            if (omega_L != 0) scene.report.add("precession_rate_mismatch", std::abs(rate / omega_L - 1), "relative");
         }
 
         // The rate of alignment: ln tan(theta) falls at beta |B| (40 degrees, while 1e-9 < theta < 0.5).
@@ -125,7 +127,10 @@ int main(int argc, char** argv) {
                 const double th = rigid::spin_angle(field.B, vec(run.y[i]));
                 if (th > 1e-9 && th < 0.5) t.push_back(fine[i]), l.push_back(std::log(std::tan(th)));
             }
-            if (t.size() >= 5) scene.report.add("alignment_rate_measured", -slope(t, l), "-d ln tan(theta)/dt at 40 degrees");
+            if (t.size() >= 5) {
+                scene.report.add("alignment_rate_measured", -slope(t, l), "-d ln tan(theta)/dt at 40 degrees");
+                scene.report.add("alignment_rate_mismatch", std::abs(-slope(t, l) / (field.beta * Bn) - 1), "relative");
+            }
             scene.report.add("alignment_rate_predicted", field.beta * Bn, "beta |B|");
 
             // 90 degrees: an equilibrium of the angle, left at the same rate beta |B|.
@@ -139,7 +144,10 @@ int main(int argc, char** argv) {
                 const double d = std::abs(rigid::spin_angle(field.B, vec(off.y[i])) - pi / 2);
                 if (d > 1e-8 && d < 0.1) t2.push_back(fine[i]), l2.push_back(std::log(d));
             }
-            if (t2.size() >= 5) scene.report.add("equator_escape_rate", slope(t2, l2), "d ln|theta - 90 deg|/dt from 90 - 1e-7 deg");
+            if (t2.size() >= 5) {
+                scene.report.add("equator_escape_rate", slope(t2, l2), "d ln|theta - 90 deg|/dt from 90 - 1e-7 deg");
+                scene.report.add("equator_rate_mismatch", std::abs(slope(t2, l2) / (field.beta * Bn) - 1), "relative");
+            }
         }
 
         kit::Figure fig(scene, "spin_alignment.svg", 820, 520);

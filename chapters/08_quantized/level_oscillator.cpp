@@ -67,6 +67,8 @@ int main(int argc, char** argv) {
             scene.report.add("period_predicted", 2 * std::numbers::pi * std::sqrt(osc.m) / osc.omega,
                              "2 pi sqrt(m) / omega");
             scene.report.add("period_if_frequency_were_omega", 2 * std::numbers::pi / osc.omega);
+            scene.report.add("period_mismatch", std::abs(period * osc.omega / (2 * std::numbers::pi * std::sqrt(osc.m)) - 1),
+                             "relative, measured against 2 pi sqrt(m) / omega");
         }
 
         // 2. Motions started between the levels, with the work of friction alongside.

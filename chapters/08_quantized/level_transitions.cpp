@@ -144,6 +144,27 @@ int main(int argc, char** argv) {
         for (const auto& r : escape) worst_escape = std::max(worst_escape, std::abs(r[2] / r[3] - 1));
         scene.report.table("escape", {"power", "delta_over_E0", "time_measured", "time_averaged"}, escape);
         scene.report.add("escape_mismatch", worst_escape, "max |measured / averaged - 1| of the escape times");
+        // The laws near the level, from the averaged equation: t ~ delta^(1-p) / ((p - 1) c) for p > 1
+        // (1 / (c delta) for p = 2), t ~ ln(1 / delta) / c for p = 1. Measured against them.
+        for (double p : powers) {
+            rigid::LevelFriction kp = k;
+            kp.power = p;
+            const double c = scene8::level_rate(osc, kp, E_n);
+            std::vector<double> x, y;  // ln(1 / delta), t
+            double last_delta = 0, last_t = 0;
+            for (const auto& r : escape)
+                if (r[0] == p) x.push_back(std::log(E0 / (r[1] * E0))), y.push_back(r[2]), last_delta = r[1] * E0, last_t = r[2];
+            if (p > 1) {
+                scene.report.add("smooth_escape_law", last_t * (p - 1) * c * std::pow(last_delta, p - 1),
+                                 "p > 1: measured time x (p-1) c delta^(p-1) at the smallest delta (the law: 1)");
+            } else {
+                const double n = double(x.size());
+                double sx = 0, sy = 0, sxx = 0, sxy = 0;
+                for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+                scene.report.add("kinked_escape_law", c * (n * sxy - sx * sy) / (n * sxx - sx * sx),
+                                 "p = 1: c x d(time)/d ln(1/delta), least squares (the law: 1)");
+            }
+        }
 
         // (c) p = 1 without any disturbance but round-off: started exactly on E = 2 E0.
         {
@@ -175,8 +196,8 @@ int main(int argc, char** argv) {
 
         kit::Figure fe(scene, "level_escape.svg", 820, 520);
         if (fe.enabled()) {
-            fe << "set title 'Leaving the level E_{n}\u00a0= 2 E_{0}\u00a0after one disturbance {/Symbol d}\u00a0below it'\n"
-                  "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel '{/Symbol d}\u00a0/ E_{0}'\n"
+            fe << "set title 'Leaving the level E_{n}\u00a0= 2 E_{0}\u00a0after one disturbance δ\u00a0below it'\n"
+                  "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'δ\u00a0/ E_{0}'\n"
                   "set ylabel 'time to fall below E_{n}\u00a0- E_{0}/2'\nset key top right font ',9'\n";
             std::string cmd = "plot ";
             for (std::size_t j = 0; j < powers.size(); ++j) {
