@@ -141,7 +141,7 @@ TEST_CASE("oscillator_energy: rejects a mass or omega that is not finite and pos
 
 // ---------------------------------------------------------------------------- level_friction
 
-TEST_CASE("level_friction: equals kappa ((1 - cos(2 pi E / E0)) / 2)^(p/2) for p = 1, 2 and 4") {
+TEST_CASE("level_friction: equals kappa ((1 - cos(2 pi E / E0)) / 2)^(p/2) for p = 1 and 2 and 4") {
     for (double p : {1.0, 2.0, 4.0}) {
         for (int n = 0; n < 20; ++n) {
             const LevelFriction k = random_friction(p);
@@ -156,7 +156,7 @@ TEST_CASE("level_friction: equals kappa ((1 - cos(2 pi E / E0)) / 2)^(p/2) for p
     }
 }
 
-TEST_CASE("level_friction: zero on every level n E0, kappa half-way, positive between") {
+TEST_CASE("level_friction: zero on every level n E0; kappa half-way; positive between") {
     const LevelFriction k{0.8, 0.5, 2};
     for (int n = 0; n <= 10; ++n) {
         CHECK(rigid::level_friction(k, n * k.E0) <= 1e-26);
@@ -282,7 +282,7 @@ TEST_CASE("oscillator_equations: rejects bad parameters when it is made") {
 
 // ------------------------------------------------------------------------------- energy_rate
 
-TEST_CASE("energy_rate: equals dE/dt of the motion, by central differences") {
+TEST_CASE("energy_rate: equals dE/dt of the motion by central differences") {
     // The test's own (6.1), integrated by rk8pd for +-h; E from the test's own formula.
     for (int n = 0; n < 6; ++n) {
         const Oscillator o = random_oscillator();
@@ -299,7 +299,7 @@ TEST_CASE("energy_rate: equals dE/dt of the motion, by central differences") {
     }
 }
 
-TEST_CASE("energy_rate: never positive, zero on the levels and at rest") {
+TEST_CASE("energy_rate: never positive; zero on the levels and at rest") {
     const Oscillator o{1.3, 0.7};
     const LevelFriction k{1.1, 0.4, 2};
     for (int n = 0; n < 40; ++n) {
@@ -324,7 +324,7 @@ TEST_CASE("spin_rhs: equals (6.2) with the hats and double cross product written
     }
 }
 
-TEST_CASE("spin_rhs: perpendicular to S, so |S| is constant") {
+TEST_CASE("spin_rhs: perpendicular to S so |S| is constant") {
     for (int n = 0; n < 30; ++n) {
         const SpinField f = random_field(checks::uniform(0, 3));
         const Vec3 S = checks::random_vector(2);
@@ -345,7 +345,7 @@ TEST_CASE("spin_rhs: at beta = 0 it is the derivative of the rotation by -(e/mc)
     }
 }
 
-TEST_CASE("spin_rhs: zero at S = 0; rejects a zero field, a non-finite e over mc and a negative beta") {
+TEST_CASE("spin_rhs: zero at S = 0; rejects a zero field and a non-finite e over mc and a negative beta") {
     CHECK_MAT_NEAR(rigid::spin_rhs({Vec3(0, 1, 2), 1.0, 2.0}, Vec3::Zero()), Vec3::Zero(), 0.0);
     CHECK_THROWS_AS(rigid::spin_rhs({Vec3::Zero(), 1.0, 1.0}, Vec3(1, 0, 0)), std::invalid_argument);
     CHECK_THROWS_AS(rigid::spin_rhs({Vec3(0, nan_, 1), 1.0, 1.0}, Vec3(1, 0, 0)), std::invalid_argument);
@@ -368,7 +368,7 @@ TEST_CASE("spin_equations: integrated by rk8pd it follows the closed form of (6.
     }
 }
 
-TEST_CASE("spin_equations: an acute spin lines up with B, an obtuse one against it") {
+TEST_CASE("spin_equations: an acute spin lines up with B; an obtuse one against it") {
     const SpinField f{Vec3(0.3, -0.2, 1.1), 1.0, 1.5};
     const Vec3 b = f.B.normalized();
     for (double deg : {10.0, 60.0, 89.0, 91.0, 120.0, 170.0}) {
@@ -388,7 +388,7 @@ TEST_CASE("spin_equations: rejects a bad field when it is made") {
 
 // ---------------------------------------------------------------------- spin_projection_rate
 
-TEST_CASE("spin_projection_rate: equals the rate of S . B over |B| along (6.2), by central differences") {
+TEST_CASE("spin_projection_rate: equals the rate of S . B over |B| along (6.2) by central differences") {
     for (int n = 0; n < 8; ++n) {
         const SpinField f = random_field(checks::uniform(0.2, 2));
         const Vec3 S = checks::random_vector(2), b = f.B.normalized();
@@ -401,7 +401,7 @@ TEST_CASE("spin_projection_rate: equals the rate of S . B over |B| along (6.2), 
     }
 }
 
-TEST_CASE("spin_projection_rate: has the sign of S . B and vanishes at 0, 90 and 180 degrees") {
+TEST_CASE("spin_projection_rate: has the sign of S . B and vanishes at 0 and 90 and 180 degrees") {
     const SpinField f{Vec3(1, 2, -0.5), -0.7, 0.8};
     const Vec3 b = f.B.normalized();
     for (double deg = 5; deg < 180; deg += 10) {
@@ -443,7 +443,7 @@ TEST_CASE("spin_angle: rejects a zero or non-finite vector") {
 
 // -------------------------------------------------------------------------------- spin_exact
 
-TEST_CASE("spin_exact: at beta = 0 the precession about B, clockwise for e over mc > 0") {
+TEST_CASE("spin_exact: at beta = 0 the precession about B; clockwise for e over mc > 0") {
     for (int n = 0; n < 20; ++n) {
         const SpinField f = random_field(0);
         const Vec3 S0 = checks::random_vector(2);
@@ -456,7 +456,7 @@ TEST_CASE("spin_exact: at beta = 0 the precession about B, clockwise for e over 
     CHECK(S.y() < -0.1);
 }
 
-TEST_CASE("spin_exact: solves (6.2), as rk8pd on this file's right-hand side shows") {
+TEST_CASE("spin_exact: solves (6.2) as rk8pd on this file's right-hand side shows") {
     for (int n = 0; n < 10; ++n) {
         const SpinField f = random_field(checks::uniform(0.1, 2));
         const Vec3 S0 = checks::random_vector(2);
