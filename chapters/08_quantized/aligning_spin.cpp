@@ -171,11 +171,11 @@ int main(int argc, char** argv) {
             fig.finish();
         }
 
-        kit::Figure fs(scene, "spin_sphere.svg", 700, 560);
+        kit::Figure fs(scene, "spin_sphere.svg", 700, 520);
         if (fs.enabled()) {
             // Draw in coordinates (e1, e2, b), so that B points up.
             auto local = [&](const Vec3& v) { return std::vector<double>{v.dot(e1), v.dot(e2), v.dot(b)}; };
-            fs << "set view 70, 25, 1.3, 1.3\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
+            fs << "set view 70, 25, 1.45, 1.45\nset view equal xyz\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\nset zrange [-1.05:1.45]\nunset border\nunset tics\nunset grid\n"
                   "set xyplane 0\nset key at screen 0.99, 0.99 top right font ',9'\nset margins 0, 0, 0, 0\n"
                   "set arrow from 0, 0, 1 to 0, 0, 1.4 head filled lw 3 lc rgb 'black'\n"
                   "set label 'B' at 0.08, 0, 1.35 font ',14'\n";

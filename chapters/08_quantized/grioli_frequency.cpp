@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
         .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
         .real("f", 1.0, "f = g L mu", kit::positive())
         .integer("grid", 200, "map resolution: grid points per side", 20, 2000)
-        .integer("repeats", 1, "timing repetitions (the minimum is kept)", 1, 50);
+        .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const rigid::Moments body = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
