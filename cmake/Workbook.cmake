@@ -195,14 +195,15 @@ endfunction()
 # ------------------------------------------------------------------------------------------
 # A scene: a small driver in chapters/NN_slug/ that draws a figure or prints a table.
 #
-#   workbook_scene(<name> TOPICS <topic>... [FIGURES] [LIBS <target>...] [ARGS <arg>...])
+#   workbook_scene(<name> TOPICS <topic>... [FIGURES] [LIBS <target>...] [ARGS <arg>...]
+#                  [SMOKE_ARGS <arg>...])
 #
 # Links only what it names: the topics it uses, the kit, and the figure helper (Boost and
 # gnuplot-iostream) only with FIGURES. ARGS are the options the main job runs it with.
 # Registers a smoke test (scene.<name>) that runs it with --json and checks its report and
-# figures.
+# figures; SMOKE_ARGS are added for that test only (a lighter run of a long scene).
 function(workbook_scene name)
-  cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS" ${ARGN})
+  cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS;SMOKE_ARGS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
   add_executable(${name} ${name}.cpp)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/scenes")
@@ -219,10 +220,14 @@ function(workbook_scene name)
   foreach(a IN LISTS S_ARGS)
     string(APPEND args "|${a}")
   endforeach()
+  set(smoke_args "${args}")
+  foreach(a IN LISTS S_SMOKE_ARGS)
+    string(APPEND smoke_args "|${a}")
+  endforeach()
   add_test(NAME "scene: ${name}"
            COMMAND ${CMAKE_COMMAND} -DEXPECT=0 -DOUT=${smoke} -DFIGURES=${S_FIGURES}
                    -DJSON=${CMAKE_BINARY_DIR}/smoke/reports/${name}.json
-                   "-DCOMMAND=$<TARGET_FILE:${name}>|--json|--out|${smoke}${args}"
+                   "-DCOMMAND=$<TARGET_FILE:${name}>|--json|--out|${smoke}${smoke_args}"
                    -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
   # Its JSON report gives the book's tests the numbers the prose quotes.
   set_tests_properties("scene: ${name}" PROPERTIES LABELS "scene;${chapter}" TIMEOUT 300

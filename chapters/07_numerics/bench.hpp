@@ -1,0 +1,138 @@
+// What the Chapter 7 scenes share: the scenarios, the methods behind one interface, the
+// long-double reference, the error and invariant measures, and the work-precision sweep.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rigid/heavy_top.hpp"
+#include "rigid/ode.hpp"
+
+namespace bench {
+
+using rigid::BodyState;
+using rigid::HeavyTop;
+using rigid::Mat3;
+using rigid::Vec3;
+
+// snippet: scenario
+// One test problem: a heavy top (f = 0 for a free body; J diagonal: body axes = principal
+// axes), its initial state, the time span, where the error is measured, and the fastest
+// angular frequency omega (fixed steps are given as h omega, the angle turned per step).
+struct Scenario {
+    std::string name, title;
+    HeavyTop top;
+    BodyState s0;
+    double T;
+    int outputs;   // the error is the largest over `outputs` equally spaced times in (0, T]
+    double omega;
+    // The closed-form motion at the given times, where there is one (empty otherwise).
+    std::function<std::vector<BodyState>(const std::vector<double>&)> exact;
+    std::string exact_name;
+    std::vector<double> times() const;
+};
+// end snippet
+
+// Every scenario of the chapter, in the order of the tables.
+std::vector<Scenario> scenarios();
+
+// snippet: method
+// One integrator behind the one interface: run() integrates the scenario with the step h
+// (kind step) or the tolerance tol (kind tolerance), writes the state at every output time
+// into `out` (sized by the caller, so that nothing is allocated for the output while the clock
+// runs), and returns the number of evaluations of the right-hand side (for a splitting: of the
+// torque). It throws std::runtime_error when the solver gives up.
+enum class Kind { step, tolerance };
+
+struct Method {
+    std::string name, label, family;
+    Kind kind;
+    std::string style;  // gnuplot line style of its curve
+    std::function<long(const Scenario&, const std::vector<double>& times, double param, std::vector<BodyState>& out)> run;
+};
+// end snippet
+
+// Your RK4; GSL rkf45, rk8pd, msadams; GSL rk4imp, bsimp, msbdf with the analytic Jacobian;
+// RKMK4; Strang's splitting and its triple jump; the Taylor method of degree 16 in double.
+const std::vector<Method>& methods();
+const Method& method(const std::string& name);
+
+// The error and the invariants of one run, measured against a reference at the output times.
+struct Metrics {
+    double err_R = 0;      // largest geodesic angle between R and the reference R (rad)
+    double err_Omega = 0;  // largest |Omega - Omega_ref| / max |Omega_ref|
+    double error = 0;      // the larger of the two: the y axis of the diagrams
+    double dH = 0;         // largest |H - H(0)| / (kinetic energy(0) + f)
+    double dL = 0;         // largest drift of the angular momentum kept by the flow, / |J Omega(0)|:
+                           // the vertical component (k, R J Omega) for a heavy top, the whole
+                           // vector R J Omega for a free body
+    double orth = 0;       // largest ||R^T R - 1||_F
+};
+Metrics measure(const Scenario& sc, const std::vector<BodyState>& reference, const std::vector<BodyState>& run);
+
+// snippet: reference
+// The reference of a scenario: the Taylor method of degree `order` in long double with the
+// step h = 0.1 / omega, from the same double-precision initial data as every method.
+struct Reference {
+    std::vector<BodyState> states;   // at the output times, rounded to double
+    double h = 0;
+    int order = 24;
+    double time_s = 0;               // its run time
+    double self_difference = -1;     // largest difference from the same at h/2 (long double); -1: not run
+    double exact_difference = -1;    // largest difference from the closed form; -1: none
+    double double_floor = 0;         // the same steps in double, against it: the round-off floor
+    double kappa = 0;                // how much the flow magnifies a change of the initial state
+                                     // (largest over the outputs; measured with a change of 1e-9)
+    double expected_floor = 0;       // Brouwer's estimate for that floor: eps kappa sqrt(steps)
+};
+Reference reference(const Scenario& sc, bool self_check);
+// end snippet
+
+// How much work a sweep may do.
+struct Budget {
+    std::string name;
+    int repeats;          // timing repetitions (the minimum is kept)
+    double max_run_s;     // a method's sweep stops after a run longer than this
+    double max_sweep_s;   // or when its runs, repetitions included, have taken longer than this
+    long max_steps;       // fixed-step sweeps stop before more steps than this
+    double step_factor;   // ratio of consecutive steps h
+    double tol_factor;    // ratio of consecutive tolerances
+    bool self_check;      // run the reference again at h/2
+};
+Budget budget(const std::string& name);  // "smoke", "quick" or "full"
+
+// One point of a work-precision diagram.
+struct Point {
+    std::string scenario, method;
+    double param = 0;        // h or tol
+    double time_s = 0;       // minimum over the repetitions
+    int repeats = 0;
+    long evaluations = 0, steps = 0;
+    Metrics m;
+    bool failed = false;
+    std::string why;         // when failed
+};
+
+// The sweep of one method on one scenario: parameters from loose to tight, each run timed
+// (minimum over budget.repeats; at least 10 for runs under 5 ms unless the budget asks for 1),
+// stopped by the budget or when the error has not improved for two points in a row (the
+// round-off floor). progress() is called before each run.
+std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference& ref, const Budget& b,
+                         const std::function<void(const std::string&)>& progress);
+
+// The run time at which a method's lower envelope first reaches `target`, interpolated
+// log-log between the two points around it; NaN if it never does.
+double time_to_reach(const std::vector<Point>& points, double target);
+
+// The run time of one evaluation of the right-hand side (3.1)-(3.2), in ns: through the OdeRhs
+// interface that GSL and your RK4 see (a VectorXd in, a new VectorXd out), and directly.
+struct RhsCost {
+    double packed_ns, direct_ns;
+};
+RhsCost rhs_cost(const HeavyTop& top, const BodyState& s);
+
+// Smallest error of a sweep, and the point that reached it.
+const Point* best(const std::vector<Point>& points);
+
+}  // namespace bench

@@ -1,0 +1,360 @@
+// Chapter 7 scene: is the Grioli precession stable? [P] leaves the question open.
+//
+// Two independent answers. (1) Linear: the monodromy matrix M of the variational equations
+// dPhi/dt = D(t) Phi along the exact precession over one period (D = euler_poisson_jacobian,
+// Chapter 4), and its eigenvalues, the Floquet multipliers, over a grid of body shapes; a
+// multiplier off the unit circle, |mu| > 1, means a deviation that grows like |mu|^(t/P).
+// (2) Nonlinear: start the full equations from the precession's initial state changed by
+// delta = 1e-8 ... 1e-4, follow the deviation for hundreds of periods, and fit its growth:
+// a power of t, or an exponential.
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "rigid/grioli.hpp"
+#include "rigid/heavy_top.hpp"
+#include "rigid/ode.hpp"
+#include "rigid/rotation.hpp"
+#include "scene.hpp"
+
+using rigid::BodyState;
+using rigid::MatX;
+using rigid::Vec3;
+using rigid::VecX;
+
+namespace {
+
+const double pi = std::numbers::pi;
+
+// snippet: shape_coordinates
+// A body shape as two numbers in (0, 1]: u = (B - A)/(C - A) runs from the symmetric limit B = A
+// (u -> 0) to the other symmetric limit B = C (u -> 1); v = (C - A)/B measures flatness, with
+// v = 1 the flat body A + B = C (the triangle inequality allows v <= 1). With A = 1:
+//   B = 1 / (1 - u v),   C = 1 + v B.
+rigid::Moments shape(double u, double v) {
+    const double B = 1 / (1 - u * v);
+    return rigid::moments_from_gaps(1.0, B - 1, v * B - (B - 1));
+}
+// end snippet
+
+struct Floquet {
+    double growth;    // ln |mu| of the largest multiplier: growth per period
+    double rotation;  // arg(mu) / (2 pi) of the multiplier farthest from 1, in [0, 1/2]
+    std::vector<std::complex<double>> multipliers;
+};
+
+// snippet: monodromy
+// The monodromy matrix over one period P = 2 pi / alpha: Phi(P) with Phi(0) = 1 and
+// dPhi/dt = D(y(t)) Phi, y(t) the exact precession (Theorem 1); Phi is packed column by column.
+MatX monodromy(const rigid::Moments& m, rigid::Sense sense, double tol) {
+    const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, sense);
+    const rigid::HeavyTop top = rigid::grioli_top(m, g);
+    const rigid::OdeRhs rhs = [&](double t, const VecX& phi) {
+        const BodyState y{rigid::grioli_angular_velocity(g, t), rigid::grioli_rotation(g, t)};
+        const MatX dPhi = rigid::euler_poisson_jacobian(top, y) * Eigen::Map<const MatX>(phi.data(), 12, 12);
+        return VecX(Eigen::Map<const VecX>(dPhi.data(), 144));
+    };
+    const MatX I = MatX::Identity(12, 12);
+    VecX last;
+    rigid::integrate_gsl(rhs, Eigen::Map<const VecX>(I.data(), 144), {0.0, 2 * pi / g.alpha},
+                         [&](double, const VecX& phi) { last = phi; }, {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+    return Eigen::Map<const MatX>(last.data(), 12, 12);
+}
+// end snippet
+
+Floquet floquet(const MatX& M) {
+    Eigen::EigenSolver<MatX> es(M, false);
+    Floquet f{-1e300, 0, {}};
+    double far = -1;
+    for (int i = 0; i < 12; ++i) {
+        const std::complex<double> mu = es.eigenvalues()(i);
+        f.multipliers.push_back(mu);
+        f.growth = std::max(f.growth, std::log(std::abs(mu)));
+        if (std::abs(mu - 1.0) > far) far = std::abs(mu - 1.0), f.rotation = std::abs(std::arg(mu)) / (2 * pi);
+    }
+    return f;
+}
+
+// The same monodromy by central differences of the nonlinear flow over one period: an
+// independent check of the Jacobian and of the variational equations.
+MatX monodromy_by_differences(const rigid::Moments& m, double tol, double eps) {
+    const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
+    const rigid::HeavyTop top = rigid::grioli_top(m, g);
+    const VecX y0 = rigid::pack(rigid::grioli_initial_state(g));
+    const rigid::OdeRhs rhs = [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); };
+    const auto flow = [&](const VecX& y) {
+        VecX last;
+        rigid::integrate_gsl(rhs, y, {0.0, 2 * pi / g.alpha}, [&](double, const VecX& x) { last = x; },
+                             {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+        return last;
+    };
+    MatX M(12, 12);
+    for (int j = 0; j < 12; ++j) {
+        VecX e = VecX::Zero(12);
+        e(j) = eps;
+        M.col(j) = (flow(y0 + e) - flow(y0 - e)) / (2 * eps);
+    }
+    return M;
+}
+
+std::string triple(const rigid::Moments& m) {
+    std::ostringstream s;
+    s.precision(4);
+    s << "(" << m.A << ", " << m.B << ", " << m.C << ")";
+    return s.str();
+}
+
+struct Body {
+    std::string name;
+    rigid::Moments m;
+};
+
+struct Growth {
+    std::vector<double> periods, deviation;  // at whole periods
+    double power = 0, rate = 0;              // fits of log d against log t, and against t
+    double r2_power = 0, r2_rate = 0;
+    bool exponential = false;
+};
+
+// Least squares y = a + b x; returns b and R^2.
+std::pair<double, double> line_fit(const std::vector<double>& x, const std::vector<double>& y) {
+    const double n = static_cast<double>(x.size());
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i], syy += y[i] * y[i];
+    const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+    return {cov / vx, vy > 0 ? cov * cov / (vx * vy) : 1.0};
+}
+
+// snippet: perturbation
+// The full equations from the precession's initial state with Omega(0) changed by
+// delta * alpha * (0.48, -0.6, 0.64), integrated by rk8pd; the deviation from the precession at
+// every whole period kP, where the precession is back at R = 1, Omega = Omega(0):
+//   d_k = angle(R(kP)) + |Omega(kP) - Omega(0)| / alpha.
+Growth perturbation(const rigid::Moments& m, double delta, int periods, double tol) {
+    const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
+    const rigid::HeavyTop top = rigid::grioli_top(m, g);
+    const BodyState s0 = rigid::grioli_initial_state(g);
+    BodyState start = s0;
+    start.Omega += delta * g.alpha * Vec3(0.48, -0.6, 0.64);
+    const double P = 2 * pi / g.alpha;
+    Growth gr;
+    const rigid::OdeRhs rhs = [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); };
+    rigid::integrate_gsl(rhs, rigid::pack(start), rigid::linspace(0, periods * P, periods),
+                         [&](double t, const VecX& y) {
+                             const BodyState s = rigid::unpack(y);
+                             gr.periods.push_back(t / P);
+                             gr.deviation.push_back(rigid::geodesic_angle(rigid::grioli_rotation(g, t), s.R) +
+                                                    (s.Omega - rigid::grioli_angular_velocity(g, t)).norm() / g.alpha);
+                         },
+                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+    // Fit where the deviation is past the start (t >= 5 P) and still small (d < 0.01), on the
+    // later half of those points (past the transient).
+    std::vector<double> lt, t, ld;
+    std::size_t end = 0;
+    while (end < gr.periods.size() && gr.deviation[end] < 0.01) ++end;
+    for (std::size_t k = 0; k < end; ++k)
+        if (gr.periods[k] >= 5 && gr.periods[k] >= gr.periods[end - 1] / 2)
+            lt.push_back(std::log(gr.periods[k])), t.push_back(gr.periods[k]), ld.push_back(std::log(gr.deviation[k]));
+    gr.power = gr.rate = std::numeric_limits<double>::quiet_NaN();
+    if (lt.size() >= 4) {
+        std::tie(gr.power, gr.r2_power) = line_fit(lt, ld);
+        std::tie(gr.rate, gr.r2_rate) = line_fit(t, ld);
+        // Linear growth d ~ c t has power 1 on this window; an exponential e^(lambda t) looks like a
+        // power lambda t, larger the later the window. Faster than t^2 counts as exponential.
+        gr.exponential = gr.power > 2;
+    }
+    return gr;
+}
+// end snippet
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("grioli_stability", "Chapter 7: the stability of the Grioli precession, linear and nonlinear");
+    opts.integer("nu", 60, "grid points along u = (B - A)/(C - A)", 4, 400)
+        .integer("nv", 40, "grid points along v = (C - A)/B", 4, 400)
+        .integer("periods", 1500, "periods followed after a perturbation", 20, 100000)
+        .real("tol", 1e-11, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6));
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const int nu = static_cast<int>(o.integer("nu")), nv = static_cast<int>(o.integer("nv"));
+        const int periods = static_cast<int>(o.integer("periods"));
+        const double tol = o.real("tol");
+
+        // (1) The map of the largest multiplier over the shapes.
+        std::vector<std::vector<double>> map;  // u, v, growth per period, rotation number
+        double worst = -1, worst_u = 0, worst_v = 0;
+        long unstable = 0;
+        const double map_time = kit::min_time([&] {
+            map.clear();
+            for (int j = 0; j < nv; ++j) {
+                const double v = (j + 1.0) / nv;  // up to the flat bodies, v = 1
+                for (int i = 0; i < nu; ++i) {
+                    const double u = (i + 0.5) / nu;
+                    const Floquet f = floquet(monodromy(shape(u, v), rigid::Sense::ccw, tol));
+                    map.push_back({u, v, f.growth, f.rotation});
+                    if (f.growth > worst) worst = f.growth, worst_u = u, worst_v = v;
+                }
+                map.push_back({});  // a blank row between rows of the grid
+            }
+        }, 1);
+        // The edges of the map: the flat bodies (v = 1) and the two symmetric limits (the first and
+        // the last column, u -> 0 and u -> 1).
+        double flat_unstable = 0, flat_u_min = 2, flat_u_max = -1, edge_growth_B_A = -1e300, edge_growth_B_C = -1e300;
+        for (const auto& r : map) {
+            if (r.empty()) continue;
+            if (r[2] > 1e-4) ++unstable;
+            if (r[1] == 1.0 && r[2] > 1e-4) ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
+            if (r[0] < 1.0 / nu) edge_growth_B_A = std::max(edge_growth_B_A, r[2]);
+            if (r[0] > 1 - 1.0 / nu) edge_growth_B_C = std::max(edge_growth_B_C, r[2]);
+        }
+
+        // Checks of the linear analysis: the multipliers by differences of the flow, and the
+        // clockwise sense (the time reversal of the counter-clockwise one).
+        const rigid::Moments tongue = shape(worst_u, worst_v);
+        const Floquet f_var = floquet(monodromy(tongue, rigid::Sense::ccw, tol));
+        const Floquet f_fd = floquet(monodromy_by_differences(tongue, 1e-12, 1e-6));
+        const Floquet f_cw = floquet(monodromy(tongue, rigid::Sense::cw, tol));
+
+        // (2) Perturbations of a few bodies, from the symmetric limits to the flat one and the
+        // most unstable shape of the grid.
+        const std::vector<Body> bodies{{"generic (1, 1.5, 2)", rigid::moments(1, 1.5, 2)},
+                                       {"near B = A (1, 1.001, 2)", rigid::moments_from_gaps(1, 1e-3, 0.999)},
+                                       {"near B = C (1, 1.999, 2)", rigid::moments_from_gaps(1, 0.999, 1e-3)},
+                                       {"flat (1, 1.5, 2.5)", rigid::moments(1, 1.5, 2.5)},
+                                       {"flat (1, 3, 4)", rigid::moments(1, 3, 4)},
+                                       {"in the tongue " + triple(tongue), tongue}};
+        std::vector<std::vector<double>> rows;  // body, delta, power, rate, r2 power, r2 rate, exponential, floquet
+        std::vector<std::vector<std::vector<double>>> curves;
+        int exponential_bodies = 0, linear_bodies = 0;
+        const double perturb_time = kit::min_time([&] {
+            rows.clear(), curves.clear();
+            exponential_bodies = linear_bodies = 0;
+            for (std::size_t b = 0; b < bodies.size(); ++b) {
+                const Floquet f = floquet(monodromy(bodies[b].m, rigid::Sense::ccw, tol));
+                int exp_votes = 0;
+                for (double delta : {1e-8, 1e-6, 1e-4}) {
+                    const Growth gr = perturbation(bodies[b].m, delta, periods, tol);
+                    rows.push_back({double(b), delta, gr.power, gr.rate, gr.r2_power, gr.r2_rate, gr.exponential ? 1.0 : 0.0,
+                                    f.growth, gr.deviation.back() / delta});
+                    exp_votes += gr.exponential;
+                    std::vector<std::vector<double>> c;
+                    for (std::size_t k = 1; k < gr.periods.size(); ++k) c.push_back({gr.periods[k], gr.deviation[k] / delta});
+                    curves.push_back(c);
+                }
+                (exp_votes >= 2 ? exponential_bodies : linear_bodies)++;
+            }
+        }, 1);
+
+        scene.report.headline("largest |ln|mu|| difference between the Floquet multipliers from the variational "
+                              "equations and from differences of the flow (body in the tongue)",
+                              std::abs(f_var.growth - f_fd.growth), map_time + perturb_time);
+        scene.report.add("grid_points", static_cast<long>(nu * nv));
+        scene.report.add("unstable_points", unstable, "growth per period > 1e-4");
+        scene.report.add("unstable_fraction", double(unstable) / (nu * nv));
+        scene.report.add("largest_growth_per_period", worst, "ln |mu| at the most unstable grid point");
+        scene.report.add("flat_unstable_fraction", flat_unstable / nu, "of the flat bodies v = 1 on the grid");
+        scene.report.add("flat_unstable_u_min", flat_unstable > 0 ? flat_u_min : -1.0);
+        scene.report.add("flat_unstable_u_max", flat_unstable > 0 ? flat_u_max : -1.0);
+        scene.report.add("edge_growth_B_near_A", edge_growth_B_A, "largest ln |mu| in the column next to B = A");
+        scene.report.add("edge_growth_B_near_C", edge_growth_B_C, "largest ln |mu| in the column next to B = C");
+        scene.report.add("largest_growth_u", worst_u);
+        scene.report.add("largest_growth_v", worst_v);
+        scene.report.add("tongue_A", tongue.A);
+        scene.report.add("tongue_B", tongue.B);
+        scene.report.add("tongue_C", tongue.C);
+        scene.report.add("tongue_multiplier_real", f_var.rotation > 0.49 ? -std::exp(f_var.growth) : std::exp(f_var.growth),
+                         "the largest multiplier (real and negative in the tongue)");
+        scene.report.add("tongue_growth_by_differences", f_fd.growth);
+        scene.report.add("tongue_growth_clockwise", f_cw.growth);
+        scene.report.add("map_time_s", map_time);
+        scene.report.add("perturbation_time_s", perturb_time);
+        scene.report.add("periods", static_cast<long>(periods));
+        scene.report.add("linear_bodies", static_cast<long>(linear_bodies));
+        scene.report.add("exponential_bodies", static_cast<long>(exponential_bodies));
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            const auto& r = rows[3 * b + 1];  // delta = 1e-6
+            const std::string k = "body" + std::to_string(b) + "_";
+            scene.report.add(k + "name", bodies[b].name);
+            scene.report.add(k + "power", r[2], "fitted d ~ t^power, delta = 1e-6");
+            scene.report.add(k + "rate", r[3], "fitted d ~ exp(rate t/P), delta = 1e-6");
+            scene.report.add(k + "floquet_growth", r[7], "ln |mu| per period");
+            scene.report.add(k + "verdict", r[6] > 0.5 ? std::string("exponential") : std::string("linear"));
+            scene.report.add(k + "final_over_delta", r[8], "d(end) / delta, delta = 1e-6");
+        }
+        scene.report.table("perturbations",
+                           {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
+                            "floquet_growth_per_period", "final_over_delta"},
+                           rows);
+        scene.report.table("map", {"u", "v", "growth_per_period", "rotation_number"}, [&] {
+            std::vector<std::vector<double>> m;
+            for (const auto& r : map)
+                if (!r.empty()) m.push_back(r);
+            return m;
+        }(), false);
+
+        kit::Figure fm(scene, "grioli_stability_map.svg", 900, 620);
+        if (fm.enabled()) {
+            fm << "set title 'Grioli precession: growth of the largest Floquet multiplier, ln|mu| per period'\n"
+                  "set xlabel 'u = (B - A)/(C - A)   (B = A at the left, B = C at the right)'\n"
+                  "set ylabel 'v = (C - A)/B   (v = 1: flat body, A + B = C)'\n"
+                  "set xrange [0:1]\nset yrange [0:1.02]\nset cbrange [0:*]\nset cblabel 'ln |mu| per period'\n"
+                  "set palette defined (0 'white', 0.02 '#fde0c5', 0.3 '#f39c6b', 1 '#b2182b')\n"
+                  "set view map\nset key bottom left opaque font ',10'\n"
+                  "splot '-' using 1:2:3 with pm3d notitle, '-' using 1:2:(0) with points pt 7 ps 1.2 lc rgb '#0072B2' "
+                  "title 'bodies of the perturbed runs', '-' using 1:2:(0):3 with labels offset 0,1 font ',9' notitle\n";
+            fm.data(map);
+            std::vector<std::vector<double>> pts;
+            for (const Body& b : bodies) pts.push_back({(b.m.B - b.m.A) / (b.m.C - b.m.A), (b.m.C - b.m.A) / b.m.B});
+            fm.data(pts);
+            std::vector<std::vector<double>> labels;
+            for (std::size_t i = 0; i < pts.size(); ++i) labels.push_back({pts[i][0], pts[i][1], double(i + 1)});
+            fm.data(labels);
+            fm.finish();
+        }
+        kit::Figure fp(scene, "grioli_perturbations.svg", 1200, 520);
+        if (fp.enabled()) {
+            fp << "set multiplot layout 1, 2 title 'Grioli precession: deviation after a change delta of Omega(0), "
+                  "at whole periods'\nset xlabel 't / P'\nset format y '10^{%L}'\nset key top left font ',8' spacing 0.85\n"
+                  "set logscale xy\nset title 'd / delta, log-log (delta 1e-8 solid, 1e-6 dashed, 1e-4 dotted); slope 1: linear'\n"
+                  "set ylabel 'd / delta'\n";
+            std::string plot = "plot ";
+            std::vector<std::vector<std::vector<double>>> blocks;
+            const char* colours[] = {"#000000", "#0072B2", "#56B4E9", "#009E73", "#E69F00", "#D55E00"};
+            const std::size_t first = 3 * (bodies.size() - 1);  // the most unstable body goes right
+            for (std::size_t i = 0; i < first; ++i) {
+                const std::size_t b = i / 3;
+                plot += std::string("'-' with lines lc rgb '") + colours[b] + "' lw 1.5 dt " + std::to_string(1 + i % 3) +
+                        (i % 3 == 0 ? " title " + kit::quoted(bodies[b].name) : std::string(" notitle")) + ", ";
+                blocks.push_back(curves[i]);
+            }
+            plot += "x with lines lc rgb '#777777' dt 4 title 'proportional to t'\n";
+            fp << plot;
+            for (const auto& c : blocks) fp.data(c);
+            fp << "unset logscale x\nset title 'the most unstable body of the map: d, and the Floquet growth |mu|^{t/P}'\n"
+                  "set ylabel 'd'\nset yrange [1e-9:10]\nset xrange [0:80]\n";
+            plot = "plot ";
+            blocks.clear();
+            const double g = rows[first][7];
+            for (std::size_t i = first; i < curves.size(); ++i) {
+                std::ostringstream delta;
+                delta << rows[i][1];
+                plot += "'-' using 1:($2*" + delta.str() + ") with lines lc rgb '#D55E00' lw 1.5 dt " +
+                        std::to_string(1 + (i - first)) + " title " + kit::quoted("delta " + delta.str()) + ", ";
+                blocks.push_back(curves[i]);
+            }
+            std::ostringstream guide;
+            guide << "1e-6*exp(" << g << "*x) with lines lc rgb '#777777' dt 4 title 'delta |mu|^{t/P}, delta = 1e-6'\n";
+            fp << plot << guide.str();
+            for (const auto& c : blocks) fp.data(c);
+            fp << "unset multiplot\n";
+            fp.finish();
+        }
+    });
+}

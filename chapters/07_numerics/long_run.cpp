@@ -1,0 +1,201 @@
+// Chapter 7 scene: a long run. The Grioli precession (1, 1.5, 2) for a million fixed steps
+// h = 1/16 (about 7900 periods) with your RK4, RKMK4, Strang's splitting and its triple jump,
+// the last three with plain and with compensated summation of their increments, and GSL's
+// rk8pd over the same time. Recorded at 60 instants spaced evenly in log t: the drift of the
+// energy and of the vertical angular momentum, ||R^T R - 1||, and the angle from the exact R.
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "figure.hpp"
+#include "rigid/grioli.hpp"
+#include "rigid/integrators.hpp"
+#include "rigid/numerics.hpp"
+#include "rigid/rotation.hpp"
+#include "rigid/stepping.hpp"
+#include "scene.hpp"
+
+using rigid::BodyState;
+using rigid::Mat3;
+using rigid::Vec3;
+using rigid::VecX;
+
+namespace {
+
+struct Track {
+    Track(std::string n, std::string l, std::string s) : name(std::move(n)), label(std::move(l)), style(std::move(s)) {}
+    std::string name, label, style;
+    std::vector<std::vector<double>> rows;  // t / period, steps, dH, dL, orth, err_R
+    double time_s = 0;
+};
+
+// Least-squares slope of log y against log x over the second half of the rows (column c).
+double late_slope(const std::vector<std::vector<double>>& rows, int c) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (std::size_t i = rows.size() / 2; i < rows.size(); ++i) {
+        if (!(rows[i][c] > 0)) continue;
+        const double x = std::log(rows[i][1]), y = std::log(rows[i][c]);
+        sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    }
+    return n < 3 ? std::numeric_limits<double>::quiet_NaN() : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("long_run", "Chapter 7: a million steps on the Grioli precession: what drifts and what does not");
+    opts.integer("steps", 1000000, "fixed steps of h = 1/16 (a power of two, so that every output time is a whole "
+                 "number of steps)", 1000, 20000000)
+        .real("tol", 1e-12, "tolerance of GSL rk8pd over the same time", kit::between(1e-14, 1e-3));
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const long N = o.integer("steps");
+        const double h = 1.0 / 16;
+        const rigid::Moments m = rigid::moments(1, 1.5, 2);
+        const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
+        const rigid::HeavyTop top = rigid::grioli_top(m, g);
+        const BodyState s0 = rigid::grioli_initial_state(g);
+        const double period = 2 * std::numbers::pi / g.alpha;
+
+        // Output instants: whole numbers of steps, about evenly spaced in log.
+        std::vector<double> times{0.0};
+        std::vector<long> at{0};
+        for (int i = 0; i <= 59; ++i) {
+            const long n = std::lround(std::pow(10.0, 1 + (std::log10(double(N)) - 1) * i / 59.0));
+            if (n > at.back()) at.push_back(n), times.push_back(n * h);
+        }
+        const double H0 = rigid::heavy_top_energy(top, s0);
+        const double E_scale = 0.5 * s0.Omega.dot(top.J * s0.Omega) + top.f;
+        const double L0 = top.k.dot(s0.R * top.J * s0.Omega), L_scale = (top.J * s0.Omega).norm();
+
+        std::vector<Track> tracks;
+        std::vector<BodyState> out(times.size());
+        const auto record = [&](Track& tr) {
+            for (std::size_t i = 1; i < times.size(); ++i) {
+                const BodyState& s = out[i];
+                tr.rows.push_back({times[i] / period, double(at[i]),
+                                   std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
+                                   std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
+                                   rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
+            }
+            tracks.push_back(tr);
+        };
+        const rigid::OdeRhs rhs = [&top](double, const VecX& y) {
+            return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
+        };
+
+        {
+            Track tr{"rk4", "your RK4", "lc rgb '#000000'"};
+            std::size_t i = 0;
+            tr.time_s = kit::min_time([&] {
+                i = 0;
+                rigid::integrate_rk4(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
+            }, 1);
+            record(tr);
+        }
+        {
+            std::ostringstream label;
+            label << "GSL rk8pd, tol " << o.real("tol");
+            Track tr{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
+            std::size_t i = 0;
+            tr.time_s = kit::min_time([&] {
+                i = 0;
+                rigid::integrate_gsl(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
+                                     {.method = "rk8pd", .rel_tol = o.real("tol"), .abs_tol = o.real("tol")});
+            }, 1);
+            record(tr);
+        }
+        const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) { return rigid::rkmk4_step(top, s, dt); };
+        const rigid::IncrementStepper strang = [&top](const BodyState& s, double dt) { return rigid::strang_step(top, s, dt); };
+        const rigid::IncrementStepper yoshida = [&strang](const BodyState& s, double dt) {
+            return rigid::triple_jump(strang, s, dt);
+        };
+        struct Geometric {
+            std::string name, label, colour;
+            const rigid::IncrementStepper* step;
+        };
+        for (const Geometric& gm : {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4},
+                                    Geometric{"strang", "Strang", "#D55E00", &strang},
+                                    Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
+            for (const auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
+                const bool plain = sum == rigid::Summation::plain;
+                Track tr{gm.name + (plain ? "_plain" : "_compensated"), gm.label + (plain ? ", plain sum" : ", compensated"),
+                         "lc rgb '" + gm.colour + "'" + (plain ? " dt 3" : "")};
+                std::size_t i = 0;
+                tr.time_s = kit::min_time([&] {
+                    i = 0;
+                    rigid::integrate_steps(*gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
+                }, 1);
+                record(tr);
+            }
+        }
+
+        // The report: the last row of every track, and the growth of the orthogonality defect.
+        double worst_orth = 0;
+        for (const Track& tr : tracks) {
+            const auto& last = tr.rows.back();
+            scene.report.add(tr.name + "_time_s", tr.time_s);
+            scene.report.add(tr.name + "_energy_drift", last[2]);
+            scene.report.add(tr.name + "_momentum_drift", last[3]);
+            scene.report.add(tr.name + "_orthogonality", last[4]);
+            scene.report.add(tr.name + "_error_R", last[5]);
+            scene.report.add(tr.name + "_orthogonality_slope", late_slope(tr.rows, 4), "d log(defect) / d log(steps), late half");
+            if (tr.name.find("_compensated") != std::string::npos) worst_orth = std::max(worst_orth, last[4]);
+        }
+        double geometric_time = 0;
+        for (const Track& tr : tracks)
+            if (tr.name.find("_compensated") != std::string::npos) geometric_time += tr.time_s;
+        scene.report.headline("largest ||R^T R - 1||_F after " + std::to_string(N) +
+                                  " steps of RKMK4, Strang and its triple jump (compensated sums; target < 1e-13)",
+                              worst_orth, geometric_time);
+        scene.report.add("steps", N);
+        scene.report.add("h", h);
+        scene.report.add("periods", N * h / period);
+        scene.report.add("brouwer", std::numeric_limits<double>::epsilon() * std::sqrt(double(N)), "eps sqrt(steps)");
+
+        kit::Figure fig(scene, "long_run.svg", 1450, 900);
+        if (!fig.enabled()) return;
+        // One key for the four panels, on their right (the colours are the same in each; the
+        // orthogonality panel has every curve and Brouwer's line, so it draws the key).
+        fig << "set multiplot layout 2, 2 margins 0.07, 0.77, 0.07, 0.92 spacing 0.08, 0.14 title " +
+                   kit::quoted("Grioli (1, 1.5, 2): " + std::to_string(N) + " steps of h = 1/16 (" +
+                               std::to_string(long(N * h / period)) + " periods)") +
+                   "\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'time (periods)'\n"
+                   "";
+        const char* panels[4][2] = {{"energy: |H - H(0)| / (T(0) + f)", "energy drift"},
+                                    {"vertical angular momentum (k, R J Omega)", "drift / |J Omega(0)|"},
+                                    {"orthogonality ||R^T R - 1||_F", "defect"},
+                                    {"angle between R and the exact R (rad)", "error"}};
+        for (int p = 0; p < 4; ++p) {
+            fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
+                       (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") + (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
+                                : "unset key\n");
+            std::string plot = "plot ";
+            for (const Track& tr : tracks) plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
+            if (p == 2) {
+                // Brouwer's law: a random walk of one rounding per step.
+                plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'eps sqrt(steps)', ";
+            }
+            plot.resize(plot.size() - 2);
+            fig << plot << "\n";
+            for (const Track& tr : tracks) {
+                std::vector<std::vector<double>> rows;
+                for (const auto& r : tr.rows) rows.push_back({r[0], std::max(r[2 + p], 1e-17)});
+                fig.data(rows);
+            }
+            if (p == 2) {
+                std::vector<std::vector<double>> rows;
+                for (const auto& r : tracks.front().rows)
+                    rows.push_back({r[0], std::numeric_limits<double>::epsilon() * std::sqrt(r[1])});
+                fig.data(rows);
+            }
+        }
+        fig << "unset multiplot\n";
+        fig.finish();
+    });
+}

@@ -1,0 +1,285 @@
+// Chapter 7 scene: the benchmark. Every method of bench::methods() on every scenario of
+// bench::scenarios(), swept over steps or tolerances; each run timed (minimum over
+// repetitions, integration only) and measured against the long-double Taylor reference.
+// Writes work_precision.csv (every run), work_precision.md (the summary table), a
+// work-precision diagram per scenario and the invariants of the 100-period Grioli runs.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench.hpp"
+#include "figure.hpp"
+#include "scene.hpp"
+
+namespace {
+
+const double nan_ = std::numeric_limits<double>::quiet_NaN();
+
+// The progress line on stderr: rewritten in place on a terminal, one line per scenario otherwise.
+class Progress {
+public:
+    Progress() : tty_(isatty(2)), start_(std::chrono::steady_clock::now()) {}
+    double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    void scenario(int i, int n, const std::string& name) {
+        index_ = i, count_ = n;
+        if (!tty_) std::cerr << "work_precision: [" << i << "/" << n << "] " << name << " (" << seconds() << " s)\n";
+    }
+    void run(const std::string& what) {
+        if (!tty_) return;
+        std::cerr << "\r\033[K[" << index_ << "/" << count_ << "] " << what << "  (" << seconds() << " s)" << std::flush;
+    }
+    void done() {
+        if (tty_) std::cerr << "\r\033[K";
+        std::cerr << "work_precision: done in " << seconds() << " s\n";
+    }
+
+private:
+    std::string seconds() const {
+        std::ostringstream s;
+        s << std::fixed << std::setprecision(1) << elapsed();
+        return s.str();
+    }
+    bool tty_;
+    std::chrono::steady_clock::time_point start_;
+    int index_ = 0, count_ = 0;
+};
+
+std::string sci(double x, int digits = 2) {
+    if (!std::isfinite(x)) return "—";
+    std::ostringstream s;
+    s << std::setprecision(digits) << std::scientific << x;
+    return s.str();
+}
+
+// A file written next to the figures, published with them when the scene succeeds.
+void write_file(kit::Scene& scene, const std::string& name, const std::string& text) {
+    if (!scene.options().figures()) return;
+    const std::filesystem::path dir = scene.options().out_dir();
+    std::filesystem::create_directories(dir);
+    const std::string staged = (dir / ("." + name + ".partial")).string();
+    std::ofstream(staged) << text;
+    scene.stage_figure(staged, (dir / name).string());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> names{"all"};
+    for (const bench::Scenario& s : bench::scenarios()) names.push_back(s.name);
+    kit::Options opts("work_precision", "Chapter 7: error against run time for every method and scenario");
+    opts.choice("sweep", "quick", {"smoke", "quick", "full"},
+                "how much to run: quick (under a minute), full (finer sweeps, 5 repetitions, minutes), smoke (seconds)")
+        .choice("scenario", "all", names, "run one scenario only")
+        .real("target", 1e-10, "the error at which the methods' run times are compared", kit::between(1e-15, 1e-2));
+
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const bench::Budget b = bench::budget(o.choice("sweep"));
+        const double target = o.real("target");
+        std::vector<bench::Scenario> all;
+        for (const bench::Scenario& s : bench::scenarios())
+            if (o.choice("scenario") == "all" || o.choice("scenario") == s.name) all.push_back(s);
+        const auto& methods = bench::methods();
+
+        Progress progress;
+        std::map<std::string, bench::Reference> refs;
+        std::map<std::string, std::map<std::string, std::vector<bench::Point>>> points;  // scenario -> method -> sweep
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            const bench::Scenario& sc = all[i];
+            progress.scenario(static_cast<int>(i + 1), static_cast<int>(all.size()), sc.name);
+            progress.run(sc.name + "  long-double reference");
+            refs[sc.name] = bench::reference(sc, b.self_check);
+            for (const bench::Method& m : methods)
+                points[sc.name][m.name] = bench::sweep(sc, m, refs[sc.name], b, [&](const std::string& w) { progress.run(w); });
+        }
+        progress.done();
+
+        // The CSV: every run.
+        std::ostringstream csv;
+        csv << "scenario,method,kind,h_or_tol,run_time_s,repeats,evaluations,err_R_rad,err_Omega_rel,error,"
+               "energy_drift,momentum_drift,orthogonality,status\n";
+        csv << std::setprecision(6);
+        std::vector<std::vector<double>> table;
+        for (std::size_t si = 0; si < all.size(); ++si)
+            for (std::size_t mi = 0; mi < methods.size(); ++mi)
+                for (const bench::Point& p : points[all[si].name][methods[mi].name]) {
+                    csv << p.scenario << "," << p.method << ","
+                        << (methods[mi].kind == bench::Kind::step ? "step" : "tolerance") << "," << p.param << ","
+                        << p.time_s << "," << p.repeats << "," << p.evaluations << ",";
+                    if (p.failed) {
+                        csv << ",,,,,,\"failed: " << p.why << "\"\n";
+                        continue;
+                    }
+                    csv << p.m.err_R << "," << p.m.err_Omega << "," << p.m.error << "," << p.m.dH << "," << p.m.dL << ","
+                        << p.m.orth << ",ok\n";
+                    table.push_back({double(si), double(mi), p.param, p.time_s, double(p.evaluations), p.m.err_R,
+                                     p.m.err_Omega, p.m.dH, p.m.dL, p.m.orth});
+                }
+        write_file(scene, "work_precision.csv", csv.str());
+        scene.report.table("runs",
+                           {"scenario", "method", "h_or_tol", "time_s", "evaluations", "err_R", "err_Omega", "dH", "dL", "orth"},
+                           table, false);
+
+        // The summary: per scenario and method, the best error, and the time to reach the target.
+        std::ostringstream md;
+        md << "# Work-precision summary (sweep: " << b.name << ")\n\n"
+           << "Error: the larger of the angle between R and the reference (rad) and |Omega - Omega_ref| / max|Omega|, "
+              "largest over the output times. Run time: integration only, minimum over "
+           << b.repeats << " repetitions. Time to " << sci(target, 0)
+           << ": interpolated on the lower envelope of the sweep. Reference: Taylor degree 24 in long double.\n";
+        std::vector<std::vector<double>> summary;
+        const bench::Point* grioli_best = nullptr;
+        std::string grioli_best_method;
+        for (std::size_t si = 0; si < all.size(); ++si) {
+            const bench::Scenario& sc = all[si];
+            const bench::Reference& ref = refs[sc.name];
+            const double t_rk8pd = bench::time_to_reach(points[sc.name]["rk8pd"], target);
+            md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", "
+               << sci(ref.time_s, 2) << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
+               << "; against the closed form (" << (sc.exact ? sc.exact_name : "none") << "): "
+               << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
+               << "; double-precision floor (the same steps in double): " << sci(ref.double_floor)
+               << " (expected eps kappa sqrt(steps) = " << sci(ref.expected_floor) << ", kappa = " << sci(ref.kappa) << ").\n\n"
+               << "| method | best error | its run time (s) | time to " << sci(target, 0)
+               << " (s) | rk8pd time / this | orthogonality | energy drift | momentum drift |\n"
+               << "|---|---|---|---|---|---|---|---|\n";
+            double fastest = std::numeric_limits<double>::infinity(), fastest_listed = fastest;
+            std::string fastest_name = "none", fastest_listed_name = "none";
+            for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+                const auto& pts = points[sc.name][methods[mi].name];
+                const bench::Point* bp = bench::best(pts);
+                const double t = bench::time_to_reach(pts, target);
+                if (std::isfinite(t) && t < fastest) fastest = t, fastest_name = methods[mi].name;
+                if (std::isfinite(t) && t < fastest_listed && methods[mi].name != "taylor16")
+                    fastest_listed = t, fastest_listed_name = methods[mi].name;
+                if (!bp) {
+                    md << "| " << methods[mi].label << " | failed | | | | | | |\n";
+                    summary.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
+                    continue;
+                }
+                md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
+                   << " | " << (std::isfinite(t) && std::isfinite(t_rk8pd) ? sci(t_rk8pd / t) : "—") << " | "
+                   << sci(bp->m.orth) << " | " << sci(bp->m.dH) << " | " << sci(bp->m.dL) << " |\n";
+                summary.push_back({100.0 * si + mi, double(si), double(mi), bp->m.error, bp->time_s, t,
+                                   std::isfinite(t) ? t_rk8pd / t : nan_, bp->m.orth, bp->m.dH, bp->m.dL});
+                if (sc.name == "grioli_100" && (!grioli_best || bp->m.error < grioli_best->m.error))
+                    grioli_best = bp, grioli_best_method = methods[mi].label;
+            }
+            const std::string k = sc.name + "_";
+            scene.report.add(k + "reference_self_difference", ref.self_difference, "long-double reference vs itself at h/2");
+            scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
+            scene.report.add(k + "reference_time_s", ref.time_s);
+            scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
+            scene.report.add(k + "kappa", ref.kappa, "growth of a change of the initial state");
+            scene.report.add(k + "expected_floor", ref.expected_floor, "eps kappa sqrt(steps)");
+            scene.report.add(k + "fastest_at_target", fastest_name);
+            scene.report.add(k + "fastest_time_s", fastest);
+            scene.report.add(k + "rk8pd_time_s", t_rk8pd);
+            scene.report.add(k + "speedup_vs_rk8pd", t_rk8pd / fastest, "rk8pd run time / fastest run time at the target");
+            scene.report.add(k + "fastest_without_taylor", fastest_listed_name, "the same, leaving out the Taylor method");
+            scene.report.add(k + "fastest_without_taylor_time_s", fastest_listed);
+            scene.report.add(k + "speedup_without_taylor", t_rk8pd / fastest_listed);
+            md << "\nFastest to " << sci(target, 0) << ": " << fastest_name << " (" << sci(fastest) << " s, "
+               << (std::isfinite(t_rk8pd / fastest) ? sci(t_rk8pd / fastest, 2) : "—") << " times faster than rk8pd); "
+               << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
+        }
+        scene.report.table("by_method",
+                           {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s", "speedup_vs_rk8pd",
+                            "orthogonality", "energy_drift", "momentum_drift"},
+                           summary, false);
+        md << "\nMethods: ";
+        for (std::size_t mi = 0; mi < methods.size(); ++mi) md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
+        md << ". Scenarios: ";
+        for (std::size_t si = 0; si < all.size(); ++si) md << (si ? ", " : "") << si << " = " << all[si].name;
+        md << ".\n";
+        write_file(scene, "work_precision.md", md.str());
+
+        if (grioli_best) {
+            const double floor = refs["grioli_100"].double_floor;
+            scene.report.headline("best method on Grioli over 100 periods (" + grioli_best_method +
+                                      "): angle between R and the long-double reference, and Omega relative",
+                                  grioli_best->m.error, grioli_best->time_s);
+            scene.report.add("grioli_100_best_method", grioli_best_method);
+            scene.report.add("grioli_100_best_error", grioli_best->m.error);
+            scene.report.add("grioli_100_best_over_floor", grioli_best->m.error / floor, "target: <= 10");
+        } else {
+            const bench::Point* any = nullptr;
+            for (const auto& [s, per] : points)
+                for (const auto& [m, pts] : per)
+                    if (const bench::Point* p = bench::best(pts); p && (!any || p->m.error < any->m.error)) any = p;
+            if (!any) throw kit::NumericalFailure("no method produced a finite solution");
+            scene.report.headline("best error of any method on " + any->scenario, any->m.error, any->time_s);
+        }
+        const bench::RhsCost cost = bench::rhs_cost(all.back().top, all.back().s0);
+        scene.report.add("rhs_packed_ns", cost.packed_ns, "one right-hand side through OdeRhs (GSL, your RK4)");
+        scene.report.add("rhs_direct_ns", cost.direct_ns, "the same, called directly on a BodyState");
+        scene.report.add("sweep", b.name);
+        scene.report.add("repeats", static_cast<long>(b.repeats));
+        scene.report.add("wall_time_s", progress.elapsed());
+
+        // The diagrams: one per scenario.
+        for (const bench::Scenario& sc : all) {
+            kit::Figure fig(scene, "wp_" + sc.name + ".svg", 860, 560);
+            if (!fig.enabled()) continue;
+            fig << "set title " + kit::quoted(sc.title + ": error against run time") + "\n"
+                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+                   "set xlabel 'run time (s), minimum over repetitions'\nset ylabel 'error: R (rad) and Omega (relative)'\n"
+                   "set key outside right top font ',10' spacing 1.1\n"
+                   "set yrange [1e-16:10]\n";
+            const double floor = refs[sc.name].double_floor;
+            std::string plot = "plot ";
+            std::vector<std::vector<std::vector<double>>> blocks;
+            for (const bench::Method& m : methods) {
+                std::vector<std::vector<double>> rows;
+                for (const bench::Point& p : points[sc.name][m.name])
+                    if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
+                if (rows.empty()) continue;
+                plot += "'-' with linespoints " + m.style + " lw 1.6 ps 0.8 title " + kit::quoted(m.label) + ", ";
+                blocks.push_back(rows);
+            }
+            plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
+                    sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
+            fig << plot;
+            for (const auto& rows : blocks) fig.data(rows);
+            fig.finish();
+        }
+        if (points.count("grioli_100")) {
+            kit::Figure fig(scene, "invariants_grioli_100.svg", 1500, 500);
+            if (fig.enabled()) {
+                fig << "set multiplot layout 1, 3 title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
+                       "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
+                       "set key bottom left font ',8' spacing 0.9\nset yrange [1e-17:1]\n";
+                for (int panel = 0; panel < 3; ++panel) {
+                    fig << (panel == 0   ? "set title 'energy: |H - H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
+                            : panel == 1 ? "set title 'vertical angular momentum (k, R J Omega)'\nset ylabel 'drift / |J Omega(0)|'\n"
+                                         : "set title 'orthogonality: ||R^T R - 1||_F'\nset ylabel 'orthogonality defect'\n");
+                    std::string plot = "plot ";
+                    std::vector<std::vector<std::vector<double>>> blocks;
+                    for (const bench::Method& m : methods) {
+                        std::vector<std::vector<double>> rows;
+                        for (const bench::Point& p : points["grioli_100"][m.name])
+                            if (!p.failed) rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
+                        if (rows.empty()) continue;
+                        plot += "'-' with linespoints " + m.style + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
+                        blocks.push_back(rows);
+                    }
+                    plot.resize(plot.size() - 2);
+                    fig << plot << "\n";
+                    for (const auto& rows : blocks) fig.data(rows);
+                }
+                fig << "unset multiplot\n";
+                fig.finish();
+            }
+        }
+    });
+}

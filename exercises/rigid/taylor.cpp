@@ -1,0 +1,108 @@
+// The Taylor-series reference integrator (rigid/taylor.hpp). Provided.
+#include "rigid/taylor.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "rigid/require.hpp"
+
+namespace rigid {
+
+namespace {
+
+template <class Real>
+using V3 = Eigen::Matrix<Real, 3, 1>;
+template <class Real>
+using M3 = Eigen::Matrix<Real, 3, 3>;
+
+// a x b, written out (Eigen's cross() wants column vectors; here rows of R are crossed too).
+template <class Real>
+inline void add_cross(Real* out, const Real* a, const Real* b) {
+    out[0] += a[1] * b[2] - a[2] * b[1];
+    out[1] += a[2] * b[0] - a[0] * b[2];
+    out[2] += a[0] * b[1] - a[1] * b[0];
+}
+
+template <class Real>
+struct Series {
+    // Coefficient n of Omega, of J Omega, and of R stored row by row (row i of R_n at R[n][3 i]).
+    std::vector<V3<Real>> W, L;
+    std::vector<std::array<Real, 9>> R;
+    explicit Series(int order) : W(order + 1), L(order + 1), R(order + 1) {}
+};
+
+}  // namespace
+
+template <class Real>
+long integrate_taylor(const HeavyTop& top, const BodyState& s0, const std::vector<double>& times,
+                      const std::function<void(double, const TaylorState<Real>&)>& observe, double h, int order) {
+    require_positive(h, "step h");
+    if (order < 1 || order > 60) throw std::invalid_argument("order must be between 1 and 60, got " + std::to_string(order));
+    if (times.empty()) throw std::invalid_argument("no output times");
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        require_finite(times[i], "output time");
+        if (i > 0 && !(times[i] > times[i - 1])) throw std::invalid_argument("output times must be strictly increasing");
+    }
+    if (!s0.Omega.allFinite() || !s0.R.allFinite()) throw std::invalid_argument("the initial state must be finite");
+
+    const M3<Real> J = top.J.template cast<Real>();
+    const M3<Real> Jinv = J.inverse();
+    const Real f = top.f;
+    const V3<Real> k = top.k.template cast<Real>(), z0 = top.z0.template cast<Real>();
+
+    TaylorState<Real> s{s0.Omega.template cast<Real>(), s0.R.template cast<Real>()};
+    Series<Real> c(order);
+    long steps = 0;
+    observe(times.front(), s);
+    for (std::size_t kout = 1; kout < times.size(); ++kout) {
+        const Real span = Real(times[kout]) - Real(times[kout - 1]);
+        const long n_steps = std::max(1L, static_cast<long>(std::ceil(static_cast<double>(span) / h)));
+        const Real dt = span / Real(n_steps);
+        for (long step = 0; step < n_steps; ++step) {
+            c.W[0] = s.Omega;
+            c.L[0] = J * s.Omega;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) c.R[0][3 * i + j] = s.R(i, j);
+            for (int n = 0; n < order; ++n) {
+                V3<Real> cross = V3<Real>::Zero();
+                std::array<Real, 9> Rn{};
+                for (int i = 0; i <= n; ++i) {
+                    add_cross(cross.data(), c.L[i].data(), c.W[n - i].data());
+                    // Row r of R_i hat(W): (row r) x W.
+                    for (int r = 0; r < 3; ++r) add_cross(&Rn[3 * r], &c.R[i][3 * r], c.W[n - i].data());
+                }
+                // R_n^T k, the coefficient n of gamma = R^T k.
+                V3<Real> g;
+                for (int j = 0; j < 3; ++j) g(j) = c.R[n][j] * k(0) + c.R[n][3 + j] * k(1) + c.R[n][6 + j] * k(2);
+                const Real inv = Real(1) / Real(n + 1);
+                c.W[n + 1] = Jinv * (cross + f * g.cross(z0)) * inv;
+                c.L[n + 1] = J * c.W[n + 1];
+                for (int e = 0; e < 9; ++e) c.R[n + 1][e] = Rn[e] * inv;
+            }
+            // Horner's rule at tau = dt.
+            V3<Real> W = c.W[order];
+            std::array<Real, 9> R = c.R[order];
+            for (int n = order - 1; n >= 0; --n) {
+                W = W * dt + c.W[n];
+                for (int e = 0; e < 9; ++e) R[e] = R[e] * dt + c.R[n][e];
+            }
+            s.Omega = W;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) s.R(i, j) = R[3 * i + j];
+        }
+        steps += n_steps;
+        observe(times[kout], s);
+    }
+    return steps;
+}
+
+template long integrate_taylor<double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
+                                       const std::function<void(double, const TaylorState<double>&)>&, double, int);
+template long integrate_taylor<long double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
+                                            const std::function<void(double, const TaylorState<long double>&)>&,
+                                            double, int);
+
+}  // namespace rigid
