@@ -565,7 +565,10 @@ int Book::render() {
             problems_.push_back("chapters/README.md links " + ch + "/README.md, which does not exist");
             continue;
         }
-        pages_.push_back({ch + ".html", md, "chapter", first_heading(md), ++n});
+        // The chapter's number is the NN of its folder, as in the contents (not its place in the list:
+        // a chapter in preparation leaves a gap, and Chapter 8's figures are still 8.x).
+        ++n;
+        pages_.push_back({ch + ".html", md, "chapter", first_heading(md), std::stoi(ch.substr(0, 2))});
     }
     for (const auto& [file, src] : {std::pair<std::string, std::string>{"errata.html", "chapters/errata.md"},
                                     {"hints.html", "exercises/hints.md"}}) {

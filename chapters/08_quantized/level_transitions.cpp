@@ -1,0 +1,220 @@
+// Chapter 8 scene: leaving the levels of (6.1). [P, Sect. 7] says the oscillator stays on a level
+// for ever when undisturbed and drops to a lower level "under the action of even infinitesimal
+// disturbances". Shown two ways: (a) seeded random kicks to q' every tau, starting on a level
+// (energy against time: a staircase down, in portions of E0); (b) a single disturbance delta
+// below the level E_n and the time the motion takes to fall half-way to E_(n-1), for the
+// smooth friction (p = 2) and the kinked one (p = 1), against the averaged energy equation.
+// Checked by the energy balance E + W - (the energy the kicks put in) = E(0), with W the work
+// of friction integrated alongside.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "quantized_scene.hpp"
+#include "rigid/ode.hpp"
+#include "rigid/quantized.hpp"
+#include "scene.hpp"
+
+using rigid::VecX;
+
+namespace {
+
+// The time at which E(t) first falls below `below`, by linear interpolation on the output grid
+// (NaN when it never does before times.back()).
+double first_time_below(const rigid::Oscillator& osc, const rigid::LevelFriction& k, double E_start,
+                        const std::vector<double>& times, double below) {
+    const VecX y0{{scene8::at_energy(osc, E_start)(0), 0.0}};
+    double found = NAN, tp = 0, Ep = E_start;
+    rigid::integrate_gsl(rigid::oscillator_equations(osc, k), y0, times, [&](double t, const VecX& y) {
+        const double E = rigid::oscillator_energy(osc, y(0), y(1));
+        if (std::isnan(found) && E < below) found = tp + (t - tp) * (Ep - below) / (Ep - E);
+        tp = t, Ep = E;
+    }, {.method = "rk8pd", .rel_tol = 1e-13, .abs_tol = 1e-13});
+    return found;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    kit::Options opts("level_transitions", "Chapter 8: the oscillator (6.1) dropping to lower levels when disturbed");
+    scene8::oscillator_options(opts, 0.5, 2.0);
+    opts.integer("start_level", 4, "the level n the kicked motions start on, E = n E0", 1, 50)
+        .real("epsilon", 3e-3, "the size of a kick: q' += epsilon * (a normal random number)", kit::positive())
+        .real("tau", 1.0, "the time between kicks", kit::positive())
+        .real("T", 600, "time span of the kicked motions", kit::positive())
+        .integer("seeds", 3, "kicked motions (seeds 1, 2, ...)", 1, 20)
+        .integer("repeats", 1, "timing repetitions (the minimum is kept)", 1, 50);
+
+    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        const rigid::Oscillator osc = scene8::oscillator_from(o);
+        const rigid::LevelFriction k = scene8::friction_from(o);
+        const double E0 = k.E0, eps = o.real("epsilon"), tau = o.real("tau"), T = o.real("T");
+        const int n_start = static_cast<int>(o.integer("start_level")), seeds = static_cast<int>(o.integer("seeds"));
+        if (tau > T) throw kit::BadInput("--tau must be at most --T (got " + std::to_string(tau) + " > " + std::to_string(T) + ")");
+        const double E_start = n_start * E0;
+        const rigid::OdeRhs g = scene8::with_work(osc, k);
+        const int per_kick = std::max(2, static_cast<int>(std::ceil(tau / 0.5)));  // outputs between kicks
+
+        // (a) Kicked motions, and one left alone.
+        struct Trace {
+            std::vector<std::vector<double>> curve;  // t, E / E0
+            double balance = 0;
+            std::vector<double> leave;  // first time below (n - 1/2) E0, n = n_start, ..., 1
+        };
+        std::vector<Trace> traces(seeds + 1);
+        const double kicked_time = kit::min_time([&] {
+            for (int s = 0; s <= seeds; ++s) {
+                Trace tr;
+                scene8::Normal normal(static_cast<std::uint64_t>(s));
+                VecX y{{scene8::at_energy(osc, E_start)(0), 0.0, 0.0}};
+                double t = 0, kicked_in = 0;
+                tr.curve.push_back({0, E_start / E0});
+                int next = n_start;
+                while (t < T - 1e-12) {
+                    const double t1 = std::min(T, t + tau);
+                    rigid::integrate_gsl(g, y, rigid::linspace(t, t1, per_kick), [&](double tt, const VecX& z) {
+                        if (tt == t) return;
+                        const double E = rigid::oscillator_energy(osc, z(0), z(1));
+                        tr.curve.push_back({tt, E / E0});
+                        tr.balance = std::max(tr.balance, std::abs(E + z(2) - kicked_in - E_start) / E_start);
+                        while (next >= 1 && E < (next - 0.5) * E0) tr.leave.push_back(tt), --next;
+                        y = z;
+                    }, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
+                    t = t1;
+                    if (s > 0 && t < T) {  // seed 0: left alone
+                        const double before = rigid::oscillator_energy(osc, y(0), y(1));
+                        y(1) += eps * normal();
+                        kicked_in += rigid::oscillator_energy(osc, y(0), y(1)) - before;
+                    }
+                }
+                traces[s] = tr;
+            }
+        });
+        double balance = 0;
+        for (const auto& tr : traces) balance = std::max(balance, tr.balance);
+        scene.report.headline("max |E + W - (energy put in by the kicks) - E(0)| / E(0) over the kicked and the "
+                              "undisturbed motions, rk8pd at tol 1e-12",
+                              balance, kicked_time);
+        std::vector<std::vector<double>> leave_rows;
+        for (int s = 0; s <= seeds; ++s)
+            for (std::size_t j = 0; j < traces[s].leave.size(); ++j)
+                leave_rows.push_back({double(s), double(n_start - int(j)), traces[s].leave[j]});
+        scene.report.table("drops", {"seed(0=undisturbed)", "level_left", "time_below_half_way"}, leave_rows);
+        double undisturbed_change = 0;
+        for (const auto& p : traces[0].curve) undisturbed_change = std::max(undisturbed_change, std::abs(p[1] - n_start));
+        scene.report.add("undisturbed_max_change", undisturbed_change, "max |E(t) / E0 - n| of the motion left alone");
+        // The plateaus: how close to n E0 the energy sits half-way between two drops.
+        double worst_plateau = 0;
+        long plateaus = 0;
+        for (int s = 1; s <= seeds; ++s) {
+            const auto& tr = traces[s];
+            for (std::size_t j = 0; j + 1 < tr.leave.size(); ++j) {
+                const double mid = 0.5 * (tr.leave[j] + tr.leave[j + 1]);
+                const auto it = std::lower_bound(tr.curve.begin(), tr.curve.end(), mid,
+                                                 [](const std::vector<double>& p, double x) { return p[0] < x; });
+                if (it == tr.curve.end()) continue;
+                const double n = n_start - 1 - double(j);
+                worst_plateau = std::max(worst_plateau, std::abs((*it)[1] - n));
+                ++plateaus;
+            }
+        }
+        scene.report.add("plateaus", plateaus, "plateaus between two drops, over the kicked motions");
+        scene.report.add("plateau_offset", worst_plateau, "max |E / E0 - n| half-way through a plateau");
+
+        // (b) One disturbance delta below E_n, n = 2: the time to fall below E_n - E0 / 2.
+        const double E_n = 2 * E0;
+        std::vector<std::vector<double>> escape;  // power, delta / E0, measured, averaged prediction
+        std::vector<double> powers{k.power};
+        if (k.power != 1) powers.push_back(1.0);
+        for (double p : powers) {
+            rigid::LevelFriction kp = k;
+            kp.power = p;
+            for (int e = 1; e <= (p == 1 ? 10 : 5); ++e) {
+                const double delta = std::pow(10.0, -e) * E0;
+                const double predicted = scene8::averaged_escape_time(osc, kp, E_n, delta);
+                const auto times = rigid::linspace(0, 1.5 * predicted + 30, static_cast<int>(std::ceil((1.5 * predicted + 30) / 0.05)));
+                const double measured = first_time_below(osc, kp, E_n - delta, times, E_n - E0 / 2);
+                if (std::isnan(measured)) throw kit::NumericalFailure("the motion did not leave the level in the time allowed");
+                escape.push_back({p, delta / E0, measured, predicted});
+            }
+        }
+        double worst_escape = 0;
+        for (const auto& r : escape) worst_escape = std::max(worst_escape, std::abs(r[2] / r[3] - 1));
+        scene.report.table("escape", {"power", "delta_over_E0", "time_measured", "time_averaged"}, escape);
+        scene.report.add("escape_mismatch", worst_escape, "max |measured / averaged - 1| of the escape times");
+        // The laws near the level, from the averaged equation: t ~ delta^(1-p) / ((p - 1) c) for p > 1
+        // (1 / (c delta) for p = 2), t ~ ln(1 / delta) / c for p = 1. Measured against them.
+        for (double p : powers) {
+            rigid::LevelFriction kp = k;
+            kp.power = p;
+            const double c = scene8::level_rate(osc, kp, E_n);
+            std::vector<double> x, y;  // ln(1 / delta), t
+            double last_delta = 0, last_t = 0;
+            for (const auto& r : escape)
+                if (r[0] == p) x.push_back(std::log(E0 / (r[1] * E0))), y.push_back(r[2]), last_delta = r[1] * E0, last_t = r[2];
+            if (p > 1) {
+                scene.report.add("smooth_escape_law", last_t * (p - 1) * c * std::pow(last_delta, p - 1),
+                                 "p > 1: measured time x (p-1) c delta^(p-1) at the smallest delta (the law: 1)");
+            } else {
+                const double n = double(x.size());
+                double sx = 0, sy = 0, sxx = 0, sxy = 0;
+                for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+                scene.report.add("kinked_escape_law", c * (n * sxy - sx * sy) / (n * sxx - sx * sx),
+                                 "p = 1: c x d(time)/d ln(1/delta), least squares (the law: 1)");
+            }
+        }
+
+        // (c) p = 1 without any disturbance but round-off: started exactly on E = 2 E0.
+        {
+            rigid::LevelFriction k1 = k;
+            k1.power = 1;
+            const double left = first_time_below(osc, k1, E_n, rigid::linspace(0, 400, 8000), E_n - E0 / 2);
+            scene.report.add("kinked_left_by_round_off_at", std::isnan(left) ? -1.0 : left,
+                             "p = 1, started exactly on E = 2 E0, no disturbance: time below 1.5 E0 (-1: never, t <= 400)");
+        }
+
+        kit::Figure fig(scene, "level_transitions.svg", 820, 520);
+        if (fig.enabled()) {
+            char head[200];
+            std::snprintf(head, sizeof head,
+                          "set title 'Kicks q'' += %g N(0,1) every %g, starting on E = %d E_{0}: energy against time'\n", eps,
+                          tau, n_start);
+            std::string cmd = std::string(head) + "set xlabel 't'\nset ylabel 'E / E_{0}'\nset key at graph 0.98, graph 0.8 right top font ',9' box opaque\n"
+                              "set yrange [0:" + std::to_string(n_start + 0.4) + "]\n";
+            for (int n = 0; n <= n_start; ++n)
+                cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
+                       " nohead dt 3 lc rgb '#999999'\n";
+            cmd += "plot '-' with lines lc rgb 'black' dt 2 lw 2 title 'no kicks'";
+            for (int s = 1; s <= seeds; ++s)
+                cmd += ", '-' with lines ls " + std::to_string(s) + " lw 1.5 title 'kicks, seed " + std::to_string(s) + "'";
+            fig << cmd + "\n";
+            for (int s = 0; s <= seeds; ++s) fig.data(traces[s].curve);
+            fig.finish();
+        }
+
+        kit::Figure fe(scene, "level_escape.svg", 820, 520);
+        if (fe.enabled()) {
+            fe << "set title 'Leaving the level E_{n}\u00a0= 2 E_{0}\u00a0after one disturbance δ\u00a0below it'\n"
+                  "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'δ\u00a0/ E_{0}'\n"
+                  "set ylabel 'time to fall below E_{n}\u00a0- E_{0}/2'\nset key top right font ',9'\n";
+            std::string cmd = "plot ";
+            for (std::size_t j = 0; j < powers.size(); ++j) {
+                char t1[80], t2[80];
+                std::snprintf(t1, sizeof t1, "p = %g, (6.1) integrated", powers[j]);
+                std::snprintf(t2, sizeof t2, "p = %g, averaged equation", powers[j]);
+                cmd += std::string(j ? ", " : "") + "'-' with points ls " + std::to_string(j + 1) + " pt 7 ps 1.2 title '" + t1 +
+                       "', '-' with lines ls " + std::to_string(j + 1) + " dt 2 title '" + t2 + "'";
+            }
+            fe << cmd + "\n";
+            for (double p : powers) {
+                std::vector<std::vector<double>> pts, line;
+                for (const auto& r : escape)
+                    if (r[0] == p) pts.push_back({r[1], r[2]}), line.push_back({r[1], r[3]});
+                fe.data(pts).data(line);
+            }
+            fe.finish();
+        }
+    });
+}

@@ -1,0 +1,102 @@
+// Chapter 8 reference solutions: the level oscillator (6.1) and the aligning spin (6.2).
+// Contracts in rigid/quantized.hpp.
+#include "rigid/quantized.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
+
+namespace rigid {
+
+double oscillator_energy(const Oscillator& osc, double q, double q_dot) {
+    require_oscillator(osc);
+    return 0.5 * osc.m * q_dot * q_dot + 0.5 * osc.omega * osc.omega * q * q;
+}
+
+double level_friction(const LevelFriction& k, double E) {
+    require_friction(k);
+    return k.kappa * std::pow(std::abs(std::sin(std::numbers::pi * E / k.E0)), k.power);
+}
+
+double level_below(const LevelFriction& k, double E) {
+    require_friction(k);
+    require_finite(E, "the energy E");
+    if (!(E >= 0)) {
+        std::ostringstream s;
+        s.precision(17);
+        s << "the energy E must be >= 0, got " << E;
+        throw std::invalid_argument(s.str());
+    }
+    return std::floor(E / k.E0) * k.E0;
+}
+
+OdeRhs oscillator_equations(const Oscillator& osc, const LevelFriction& k) {
+    require_oscillator(osc);
+    require_friction(k);
+    return [osc, k](double, const VecX& y) {
+        const double q = y(0), v = y(1);
+        const double E = 0.5 * osc.m * v * v + 0.5 * osc.omega * osc.omega * q * q;
+        const double friction = k.kappa * std::pow(std::abs(std::sin(std::numbers::pi * E / k.E0)), k.power);
+        return VecX{{v, -(osc.omega * osc.omega * q + friction * v) / osc.m}};
+    };
+}
+
+double energy_rate(const Oscillator& osc, const LevelFriction& k, double q, double q_dot) {
+    return -level_friction(k, oscillator_energy(osc, q, q_dot)) * q_dot * q_dot;
+}
+
+Vec3 spin_rhs(const SpinField& field, const Vec3& S) {
+    require_spin_field(field);
+    const Vec3& B = field.B;
+    const double S2 = S.squaredNorm();
+    const Vec3 precession = -field.e_over_mc * B.cross(S);
+    if (S2 == 0) return precession;  // zero as well
+    // S^ x (B^ x S^) = (B - S (S.B) / |S|^2) / |B|: the part of B^ across S.
+    const double BS = B.dot(S);
+    return precession + (field.beta * BS / B.norm()) * (B - S * (BS / S2));
+}
+
+OdeRhs spin_equations(const SpinField& field) {
+    require_spin_field(field);
+    return [field](double, const VecX& y) {
+        const Vec3 dS = spin_rhs(field, Vec3(y(0), y(1), y(2)));
+        return VecX{{dS(0), dS(1), dS(2)}};
+    };
+}
+
+double spin_projection_rate(const SpinField& field, const Vec3& S) {
+    require_spin_field(field);
+    const double S2 = S.squaredNorm();
+    if (S2 == 0) return 0;
+    const double B = field.B.norm(), c = S.dot(field.B) / B;  // S . B^
+    const double sin2 = S.cross(field.B).squaredNorm() / (S2 * B * B);
+    return field.beta * B * c * sin2;
+}
+
+double spin_angle(const Vec3& B, const Vec3& S) {
+    require_axis(B, "the field B");
+    require_axis(S, "the spin S");
+    return std::atan2(S.cross(B).norm(), S.dot(B));
+}
+
+Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) {
+    const Vec3 b = require_axis(field.B, "the field B");
+    require_spin_field(field);
+    require_finite(t, "the time t");
+    if (!S0.allFinite()) throw std::invalid_argument("the initial spin S0 must be a finite vector, got " + describe(S0));
+    const double size = S0.norm();
+    if (size == 0) return S0;
+    const double B = field.B.norm();
+    const Vec3 par = S0.dot(b) * b, perp = S0 - par;
+    // In the frame turning with the precession, S moves in the plane of B and S0 only, with
+    // tan(theta) = tan(theta0) exp(-x). Scaled so that exp never overflows.
+    const double x = field.beta * B * t;
+    Vec3 d = x >= 0 ? Vec3(par + std::exp(-x) * perp) : Vec3(std::exp(x) * par + perp);
+    if (par.squaredNorm() == 0) d = perp;  // exactly 90 degrees: an equilibrium of the angle
+    return rotation_about(b, -field.e_over_mc * B * t) * (size * d.normalized());
+}
+
+}  // namespace rigid
