@@ -12,6 +12,7 @@
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -76,10 +77,7 @@ std::string yesno(bool b) { return b ? "yes" : "no"; }
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_affirmations", "Chapter 5: the five affirmations after Theorem 1, checked one by one");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive())
+    ch5::moment_options(opts)
         .integer("restarts", 6, "random starts per search", 1, 200);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {

@@ -15,6 +15,7 @@
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -42,10 +43,7 @@ std::vector<std::vector<double>> ellipse(const Vec3& u, double ru, const Vec3& v
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_initial_position", "Chapter 5: the initial position of Item II (the paper's Figure 1)");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive());
+    ch5::moment_options(opts);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));

@@ -11,14 +11,12 @@
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_integrators", "Chapter 5: rotation error against run time over 100 periods, for GSL's integrators");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive())
+    ch5::moment_options(opts)
         .choice("sense", "ccw", {"ccw", "cw"}, "sense of the precession")
         .integer("periods", 100, "periods to integrate", 1, 10000)
         .integer("repeats", 3, "timing: the smallest of this many runs (runs over 0.05 s: one)", 1, 20);

@@ -17,6 +17,7 @@
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -65,10 +66,7 @@ std::vector<std::vector<double>> rows(const std::vector<Vec3>& v) {
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_paths", "Chapter 5: the two regular precessions (the paper's Figure 4), paths of G and of the tip of R_B");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive())
+    ch5::moment_options(opts)
         .integer("samples", 240, "points per period", 16, 100000);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {

@@ -12,16 +12,14 @@
 
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Vec3;
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_precession", "Chapter 5: a Grioli precession, built from A < B < C and f, integrated and compared");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive())
+    ch5::moment_options(opts)
         .choice("sense", "ccw", {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
         .integer("periods", 100, "periods 2 pi / alpha to integrate", 1, 100000)
         .integer("samples", 16, "comparisons per period", 1, 10000)

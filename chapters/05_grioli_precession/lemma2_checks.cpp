@@ -11,6 +11,7 @@
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -60,10 +61,7 @@ std::vector<Vec3> printed_T(const Vec3& a, const Vec3& k, double eb) {
 
 int main(int argc, char** argv) {
     kit::Options opts("lemma2_checks", "Chapter 5: (4.2)-(4.15) checked line by line, and case (2) against case (1)");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive());
+    ch5::moment_options(opts);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
