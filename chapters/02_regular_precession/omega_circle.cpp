@@ -14,6 +14,7 @@
 #include "figure.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -22,16 +23,10 @@ using rigid::Vec3;
 
 namespace {
 
-// snippet: omega_from_rotations
-// Omega at t from R(t) alone: eighth-order central difference of R, then (1.1.1).
+// Omega at t from R(t) alone: the difference quotient of R, then (1.1.1).
 Vec3 omega_from_rotations(const RegularPrecession& p, double t, double h) {
-    static const double w[4] = {4. / 5, -1. / 5, 4. / 105, -1. / 280};
-    Mat3 R_dot = Mat3::Zero();
-    for (int j = 1; j <= 4; ++j)
-        R_dot += w[j - 1] * (rigid::precession_rotation(p, t + j * h) - rigid::precession_rotation(p, t - j * h));
-    return rigid::body_angular_velocity(rigid::precession_rotation(p, t), R_dot / h);
+    return rigid::body_angular_velocity(rigid::precession_rotation(p, t), ch2::rotation_rate(p, t, h));
 }
-// end snippet
 
 }  // namespace
 

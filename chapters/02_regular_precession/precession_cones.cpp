@@ -14,6 +14,7 @@
 #include "figure.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
+#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -22,13 +23,9 @@ using rigid::Vec3;
 
 namespace {
 
-// omega = vee(Rdot R^T) with an eighth-order central difference of R(t).
+// omega = vee(Rdot R^T) with the eighth-order difference quotient of R(t).
 Vec3 omega_fd(const RegularPrecession& p, double t, double h) {
-    static const double w[4] = {4. / 5, -1. / 5, 4. / 105, -1. / 280};
-    Mat3 R_dot = Mat3::Zero();
-    for (int j = 1; j <= 4; ++j)
-        R_dot += w[j - 1] * (rigid::precession_rotation(p, t + j * h) - rigid::precession_rotation(p, t - j * h));
-    return rigid::lab_angular_velocity(rigid::precession_rotation(p, t), R_dot / h);
+    return rigid::lab_angular_velocity(rigid::precession_rotation(p, t), ch2::rotation_rate(p, t, h));
 }
 
 std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
