@@ -495,10 +495,13 @@ function(workbook_grading)
   add_custom_command(OUTPUT "${dir}/manifest.txt"
     COMMAND workbook_grade manifest --topics "${dir}/topics.txt" --points "${points}"
             --out "${dir}/manifest.txt"
-    DEPENDS workbook_grade ${references} "${dir}/topics.txt" "${points}"
+    DEPENDS workbook_grade ${references} "${dir}/topics.txt" "${points}" workbook_doctest_main
             "${WORKBOOK_ROOT}/chapters/README.md"
     COMMENT "Listing the graders' exercises and tests in grading/manifest.txt")
   add_custom_target(grading ALL DEPENDS "${dir}/manifest.txt")
   list(REMOVE_DUPLICATES needed)
   add_dependencies(grading workbook_grade ${needed})
+  if(TARGET grading_replay)
+    add_dependencies(grading grading_replay)  # record and replay (tests/grading/CMakeLists.txt)
+  endif()
 endfunction()

@@ -1,8 +1,12 @@
-// The one doctest main shared by every grader binary, and the reseeding of checks::rng().
+// The one doctest main shared by every grader binary, the reseeding of checks::rng(), and the
+// verdict reporter of the grading run.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <random>
+#include <sstream>
 
 namespace checks {
 
@@ -12,6 +16,10 @@ std::mt19937_64& rng() {
 }
 
 }  // namespace checks
+
+// Defined only in the grading run's replay binaries (tests/grading/replay/replay.cpp): why the
+// test case cannot pass although its checks may have, or an empty string.
+extern "C" const char* workbook_replay_verdict() __attribute__((weak));
 
 namespace {
 
@@ -33,5 +41,87 @@ struct Reseed : doctest::IReporter {
 };
 
 REGISTER_LISTENER("reseed", 1, Reseed);
+
+// The grading run's reporter (--reporters=workbook): one JSON object per line, written and
+// flushed as things happen, so that a process that dies leaves what it had said.
+//   {"test": name, "file": ..., "line": n}                 per test case, for --list-test-cases
+//   {"event": "start", "name": ..., "file": ..., "line": n}
+//   {"event": "assert", "file", "line", "type", "expression", "expanded", "info": [...], ...}
+//                                                           every failed check
+//   {"event": "message", "file", "line", "text", "severity"}   MESSAGE, WARN, FAIL
+//   {"event": "exception", "text": ..., "crash": bool}      what escaped the test case
+//   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "replay": ...}
+struct Verdicts : doctest::IReporter {
+    const doctest::ContextOptions& opt;
+    const doctest::TestCaseData* current = nullptr;
+    explicit Verdicts(const doctest::ContextOptions& o) : opt(o) {}
+
+    void emit(const nlohmann::json& j) {
+        *opt.cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+        opt.cout->flush();
+    }
+    static std::string text(const doctest::String& s) { return s.c_str(); }
+    static nlohmann::json contexts() {
+        nlohmann::json info = nlohmann::json::array();
+        const int n = get_num_active_contexts();
+        const auto all = get_active_contexts();
+        for (int i = 0; i < n; ++i) {
+            std::ostringstream s;
+            all[i]->stringify(&s);
+            info.push_back(s.str());
+        }
+        return info;
+    }
+
+    void report_query(const doctest::QueryData& q) override {
+        for (unsigned i = 0; i < q.num_data; ++i)
+            emit({{"test", q.data[i]->m_name}, {"file", text(q.data[i]->m_file)}, {"line", q.data[i]->m_line}});
+    }
+    void test_run_start() override {}
+    void test_run_end(const doctest::TestRunStats&) override {}
+    void test_case_start(const doctest::TestCaseData& t) override {
+        current = &t;
+        emit({{"event", "start"}, {"name", t.m_name}, {"file", text(t.m_file)}, {"line", t.m_line}});
+    }
+    void test_case_reenter(const doctest::TestCaseData&) override {}
+    void test_case_end(const doctest::CurrentTestCaseStats& st) override {
+        nlohmann::json j{{"event", "end"},
+                         {"name", current ? current->m_name : ""},
+                         {"success", st.testCaseSuccess},
+                         {"failed_checks", st.numAssertsFailedCurrentTest},
+                         {"checks", st.numAssertsCurrentTest}};
+        if (workbook_replay_verdict) {
+            const std::string problem = workbook_replay_verdict();
+            j["replay"] = problem;
+            if (!problem.empty()) j["success"] = false;
+        }
+        emit(j);
+    }
+    void test_case_exception(const doctest::TestCaseException& e) override {
+        emit({{"event", "exception"}, {"text", text(e.error_string)}, {"crash", e.is_crash}});
+    }
+    void subcase_start(const doctest::SubcaseSignature&) override {}
+    void subcase_end() override {}
+    void log_assert(const doctest::AssertData& a) override {
+        if (!a.m_failed) return;
+        nlohmann::json j{{"event", "assert"},
+                         {"file", a.m_file},
+                         {"line", a.m_line},
+                         {"type", doctest::assertString(a.m_at)},
+                         {"expression", a.m_expr},
+                         {"expanded", text(a.m_decomp)},
+                         {"info", contexts()}};
+        if (a.m_threw) j["threw"] = text(a.m_exception);
+        if (a.m_exception_type) j["expected_exception"] = a.m_exception_type;
+        emit(j);
+    }
+    void log_message(const doctest::MessageData& m) override {
+        emit({{"event", "message"}, {"file", m.m_file}, {"line", m.m_line}, {"text", text(m.m_string)},
+              {"severity", doctest::failureString(m.m_severity)}, {"info", contexts()}});
+    }
+    void test_case_skipped(const doctest::TestCaseData&) override {}
+};
+
+REGISTER_REPORTER("workbook", 1, Verdicts);
 
 }  // namespace

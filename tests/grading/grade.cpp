@@ -6,10 +6,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "grading.hpp"
 
@@ -17,70 +20,58 @@ namespace grading {
 
 namespace {
 
-// The text of the first <tag>...</tag> in xml[from, to), decoded, without the indentation.
-std::string element_text(const std::string& xml, const std::string& tag, std::size_t from, std::size_t to,
-                         std::size_t* after = nullptr) {
-    const auto open = xml.find("<" + tag, from);
-    if (open == std::string::npos || open >= to) return {};
-    const auto body = xml.find('>', open);
-    const auto close = xml.find("</" + tag + ">", body);
-    if (body == std::string::npos || close == std::string::npos || close > to) return {};
-    if (after) *after = close + tag.size() + 3;
-    // The reporter indents the first line of a text; the others (a matrix's rows) keep their
-    // own alignment.
-    std::string text;
-    for (const auto& line : split(decode_xml(xml.substr(body + 1, close - body - 1)), '\n')) {
-        std::string t = line.substr(0, line.find_last_not_of(" \t\r") + 1);
-        if (text.empty()) t = trim(t);
-        if (t.empty() && text.empty()) continue;
-        if (!text.empty()) text += '\n';
-        text += t;
-    }
-    return trim(text);
-}
-
 std::string indent(const std::string& text, const std::string& prefix) {
     std::string out;
     for (const auto& line : split(text, '\n')) out += prefix + line + "\n";
     return out;
 }
 
-// Why a test case failed, from its part of the XML report: the first failed check (where,
-// what, with which values, and what it logged: expected, actual, tolerance) or the exception.
-std::string failure_details(const Setup& setup, const std::string& xml, std::size_t from, std::size_t to) {
-    const auto expression = xml.find("<Expression success=\"false\"", from);
-    const auto exception = xml.find("<Exception", from);
-    std::string out;
-    if (expression != std::string::npos && expression < to && (exception == std::string::npos || expression < exception)) {
-        const std::string head = xml.substr(expression, xml.find('>', expression) - expression);
-        const auto end = xml.find("</Expression>", expression);
-        const std::size_t stop = end == std::string::npos ? to : end;
-        out += relative_to_root(setup, xml_attribute(head, "filename")) + ":" + xml_attribute(head, "line") + ": " +
-               xml_attribute(head, "type") + "( " + element_text(xml, "Original", expression, stop) + " ) failed\n";
-        const std::string expanded = element_text(xml, "Expanded", expression, stop);
-        if (!expanded.empty()) out += "  with values: " + expanded + "\n";
-        const std::string thrown = element_text(xml, "Exception", expression, stop);
-        const std::string wanted = element_text(xml, "ExpectedException", expression, stop);
-        if (!wanted.empty()) out += "  expected it to throw " + wanted + (thrown.empty() ? ", and it did not" : "") + "\n";
-        if (!thrown.empty()) out += "  threw: " + thrown + "\n";
-        for (std::size_t p = expression, next = 0;; p = next) {
-            const std::string info = element_text(xml, "Info", p, stop, &next);
-            if (info.empty()) break;
-            out += indent(info, "  ");
+// What the replay's reporter said about one test case (tests/main.cpp, JSON lines).
+struct Said {
+    bool started = false, ended = false, success = false;
+    int failed_checks = 0;
+    std::string replay, exception, first_failure;
+};
+
+Said read_verdict(const Setup& setup, const std::string& lines, const std::string& test) {
+    Said said;
+    bool inside = false;
+    for (const auto& line : split(lines, '\n')) {
+        const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+        if (!j.is_object()) continue;
+        const std::string event = j.value("event", "");
+        if (event == "start") {
+            inside = j.value("name", "") == test;
+            said.started = said.started || inside;
+        } else if (!inside) {
+            continue;
+        } else if (event == "assert" && said.first_failure.empty()) {
+            std::string out = relative_to_root(setup, j.value("file", "")) + ":" + std::to_string(j.value("line", 0)) + ": " +
+                              j.value("type", "CHECK") + "( " + j.value("expression", "") + " ) failed\n";
+            const std::string expanded = j.value("expanded", "");
+            if (!expanded.empty() && expanded != j.value("expression", "")) out += "  with values: " + expanded + "\n";
+            const std::string wanted = j.value("expected_exception", "");
+            const std::string thrown = j.value("threw", "");
+            if (!wanted.empty()) out += "  expected it to throw " + wanted + (j.contains("threw") ? "" : ", and it did not") + "\n";
+            if (!thrown.empty()) out += "  threw: " + thrown + "\n";
+            if (j.contains("info") && j["info"].is_array())
+                for (const auto& info : j["info"])
+                    if (info.is_string()) out += indent(trim(info.get<std::string>()), "  ");
+            said.first_failure = out;
+        } else if (event == "message" && said.first_failure.empty() && j.value("severity", "") != "WARNING") {
+            said.first_failure = relative_to_root(setup, j.value("file", "")) + ":" + std::to_string(j.value("line", 0)) +
+                                 ": " + j.value("text", "") + "\n";
+        } else if (event == "exception") {
+            said.exception = j.value("text", "");
+        } else if (event == "end") {
+            said.ended = true;
+            said.success = j.value("success", false);
+            said.failed_checks = j.value("failed_checks", 0);
+            said.replay = j.value("replay", "");
+            inside = false;
         }
-    } else if (exception != std::string::npos && exception < to) {
-        const std::string head = xml.substr(exception, xml.find('>', exception) - exception);
-        out += std::string(xml_attribute(head, "crash") == "true" ? "crashed: " : "threw an exception: ") +
-               element_text(xml, "Exception", exception, to) + "\n";
     }
-    const auto overall = xml.find("<OverallResultsAsserts", from);
-    if (overall != std::string::npos && overall < to) {
-        const std::string head = xml.substr(overall, xml.find('>', overall) - overall);
-        const std::string failures = xml_attribute(head, "failures");
-        if (!failures.empty() && failures != "0" && failures != "1")
-            out += "(" + failures + " checks failed in this test; the first is shown)\n";
-    }
-    return out.empty() ? "the test failed\n" : out;
+    return said;
 }
 
 std::string first_error(const std::string& log) {
@@ -105,18 +96,31 @@ std::string build_problem(const Outcome& o, const std::string& what, const std::
     return "the " + what + " failed with exit status " + std::to_string(o.exit_code);
 }
 
-// Tests come from the graders only: an exercise file that uses doctest (to register test
-// cases or reporters of its own) is refused, as the symbols of its object show.
+// Tests come from the graders only: an exercise file that uses doctest to register test cases,
+// reporters or listeners of its own is refused, as the symbols its object uses show. Merely
+// including doctest.h uses none of them.
 std::string test_framework_use(const Setup& setup, const std::string& object, const std::string& work_dir,
                                const Options& options) {
     if (setup.nm.empty()) return {};
     const std::string listing = work_dir + "/logs/symbols.txt";
-    const Outcome o = run_limited({setup.nm, "-C", object}, work_dir, listing, options.build_limits);
+    const Outcome o = run_limited({setup.nm, "-C", "-u", object}, work_dir, listing, options.build_limits);
     if (!o.started || o.exit_code != 0) return {};
     for (const auto& line : split(read_file(listing), '\n'))
-        if (line.find(" doctest::") != std::string::npos)
-            return "uses the test framework (doctest): exercise files must not define tests or reporters";
+        if (line.find("doctest::detail::regTest") != std::string::npos ||
+            line.find("doctest::detail::registerReporterImpl") != std::string::npos ||
+            line.find("doctest::detail::registerExceptionTranslatorImpl") != std::string::npos ||
+            line.find("doctest::Context::") != std::string::npos)
+            return "uses the test framework (doctest) to define tests, reporters or a main: exercise files must not "
+                   "define tests or reporters";
     return {};
+}
+
+// A test's share of its exercise's points: equal shares to 4 decimals, the rounding remainder to
+// the last test, so that the shares written in the results add up to the exercise's points.
+double share(double points, std::size_t tests, std::size_t k) {
+    const double base = std::round(points / static_cast<double>(tests) * 1e4) / 1e4;
+    if (k + 1 < tests) return base;
+    return std::round((points - base * static_cast<double>(tests - 1)) * 1e4) / 1e4;
 }
 
 struct Run {
@@ -124,10 +128,11 @@ struct Run {
     bool not_started = false;
 };
 
-// The verdict of one test from how its process ended and from the XML file.
-Run decide(const Setup& setup, const Topic& topic, const Test& test,
-           const Outcome& o, const std::string& xml, const Options& options) {
-    Run r;
+// The verdict of one test: from how the student's process ended (a crash, the time limit),
+// then from the replay of its record in the trusted process, whose reporter says whether the
+// grader's test case passed. Nothing the student's process printed or wrote counts.
+Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Outcome& replayed,
+           const std::string& verdict_lines, const Test& test, const Options& options) {
     const double limit = options.test_limits.wall_seconds;
     if (!o.started) return {"crash", "could not start the test: " + o.error};
     if (o.timed_out) return {"timeout", "timed out after " + format_number(limit) + " s and was stopped: an endless loop, or far too much work?"};
@@ -135,54 +140,34 @@ Run decide(const Setup& setup, const Topic& topic, const Test& test,
     if (o.signal == SIGXFSZ)
         return {"crash", "output limit exceeded: the test wrote more than " + std::to_string(options.test_limits.output_bytes) +
                              " bytes and was stopped (SIGXFSZ)"};
-    if (o.signal) {
-        // doctest's own account of the signal, when it could write one ("SIGSEGV - Segmentation
-        // violation signal"), else the signal's name.
-        std::string message = "crashed with " + signal_name(o.signal);
-        const auto p = xml.find("<Exception crash=\"true\"");
-        const std::string doctest_says = p == std::string::npos ? "" : element_text(xml, "Exception", p, xml.size());
-        if (starts_with(doctest_says, signal_name(o.signal))) message = "crashed with " + doctest_says;
-        return {"crash", message};
-    }
-    // It exited. Only a test case from the grader's own file, at its own line, closed with its
-    // result, counts; and the process must then exit with status 0.
-    int found = 0;
-    std::size_t start = 0, end = 0;
-    bool closed = false, success = false, misplaced = false;
-    for (std::size_t pos = 0; (pos = xml.find("<TestCase ", pos)) != std::string::npos; ++pos) {
-        const auto head_end = xml.find('>', pos);
-        if (head_end == std::string::npos) break;
-        const std::string head = xml.substr(pos, head_end - pos);
-        if (xml_attribute(head, "name") != test.name || xml_attribute(head, "skipped") == "true") continue;
-        ++found;
-        start = pos;
-        misplaced = xml_attribute(head, "filename") != setup.root + "/" + topic.test_file ||
-                    xml_attribute(head, "line") != std::to_string(test.line);
-        end = xml.find("</TestCase>", pos);
-        closed = false;
-        if (end != std::string::npos) {
-            const auto overall = xml.find("<OverallResultsAsserts", pos);
-            if (overall != std::string::npos && overall < end) {
-                closed = true;
-                const std::string o_head = xml.substr(overall, xml.find('>', overall) - overall);
-                success = xml_attribute(o_head, "test_case_success") == "true";
-            }
-        }
-    }
+    if (o.signal) return {"crash", "crashed with " + signal_name(o.signal)};
+    if (record_overflow) return {"fail", "the record of the test's calls grew past its limit of 256 MiB"};
     const std::string status = "the process exited with status " + std::to_string(o.exit_code);
-    if (found > 1) return {"fail", "more than one test case with this name ran; tests are only taken from the graders"};
-    if (found == 1 && misplaced) return {"fail", "the test case ran from an unexpected place; tests are only taken from the graders"};
-    if (found == 0 || !closed)
-        return {"fail", "the test did not report completion: " + status +
-                            " before the test finished (exit(), quick_exit() or _exit() in the exercise code?)"};
-    if (success) {
+    if (!replayed.started) return {"fail", "could not replay the test: " + replayed.error};
+    const Said said = read_verdict(setup, verdict_lines, test.name);
+    if (replayed.timed_out || replayed.signal || !said.ended) {
+        std::string why = replayed.timed_out ? "took longer than " + format_number(limit) + " s"
+                          : replayed.signal  ? "was killed by " + signal_name(replayed.signal)
+                                             : "ended without a verdict";
+        return {"fail", "the replay of the test's record " + why + (said.replay.empty() ? "" : ": " + said.replay)};
+    }
+    if (!said.replay.empty()) {
+        if (said.replay.find("ends before") != std::string::npos || said.replay.find("stops inside") != std::string::npos ||
+            said.replay.find("left no record") != std::string::npos)
+            return {"fail", "the test did not report completion: " + status +
+                                " before the test finished (exit(), quick_exit() or _exit() in the exercise code?); " + said.replay};
+        return {"fail", "the test's record does not replay: " + said.replay};
+    }
+    if (said.success) {
         if (o.exit_code == 0) return {"pass", ""};
         return {"fail", "the test passed but then " + status};
     }
-    r.verdict = "fail";
-    r.message = failure_details(setup, xml, start, end);
-    if (!r.message.empty() && r.message.back() == '\n') r.message.pop_back();
-    return r;
+    std::string message = said.first_failure;
+    if (message.empty() && !said.exception.empty()) message = "threw an exception: " + said.exception + "\n";
+    if (said.failed_checks > 1) message += "(" + std::to_string(said.failed_checks) + " checks failed in this test; the first is shown)\n";
+    if (message.empty()) message = "the test failed\n";
+    if (message.back() == '\n') message.pop_back();
+    return {"fail", message};
 }
 
 }  // namespace
@@ -297,7 +282,9 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
                 link.insert(link.end(), setup.link_flags.begin(), setup.link_flags.end());
                 link.insert(link.end(), topic.objects.begin(), topic.objects.end());
                 link.push_back(object);
+                link.insert(link.end(), topic.recorder.begin(), topic.recorder.end());
                 link.insert(link.end(), topic.link.begin(), topic.link.end());
+                link.insert(link.end(), topic.wraps.begin(), topic.wraps.end());
                 link.push_back("-o");
                 link.push_back(binary);
                 o = run_limited(link, work_dir, log, options.build_limits);
@@ -308,30 +295,49 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
             }
             if (!log_dir.empty()) write_file(log_dir + "/" + topic.name + ".build.txt", build_log);
             if (verdict.empty()) {
-                // Every test in its own process.
+                // Every test in its own process, in the sandbox: it records what the student's
+                // functions returned. Then the trusted replay binary runs the same test on that
+                // record and says whether it passes.
                 const std::string run_dir = work_dir + "/run";
                 const std::string output_path = work_dir + "/logs/output.txt";
-                std::string file_filter = setup.root + "/" + topic.test_file;
-                if (file_filter.find_first_of(",*?[]\\") != std::string::npos)
-                    file_filter = "*" + topic.test_file.substr(topic.test_file.rfind('/'));
+                const std::string record_path = work_dir + "/logs/record.bin";
+                const std::string replay_output = work_dir + "/logs/replay.txt";
+                const std::string file_filter = "*/" + topic.test_file;
+                Limits replay_limits = options.test_limits;
+                replay_limits.isolate = false;
+                replay_limits.memory_mb += 512;  // the record itself, up to 256 MiB
+                replay_limits.environment = {"WORKBOOK_RECORD=" + record_path};
                 for (const auto& exercise : topic.exercises) {
                     if (!selection.exercise.empty() && exercise.name != selection.exercise) continue;
-                    for (const auto& test : exercise.tests) {
-                        remove_tree(run_dir);
-                        make_dirs(run_dir);
-                        std::string xml;
-                        const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=xml",
-                                                       "--out=/dev/fd/3", "--no-colors"},
-                                                      run_dir, output_path, options.test_limits, &xml);
-                        Run r = decide(setup, topic, test, t, xml, options);
+                    for (std::size_t k = 0; k < exercise.tests.size(); ++k) {
+                        const Test& test = exercise.tests[k];
+                        if (isolation() != Isolation::namespaces) {
+                            remove_tree(run_dir);
+                            make_dirs(run_dir);
+                            if (isolation() == Isolation::user) (void)!chown(run_dir.c_str(), 65534, 65534);
+                        }
+                        std::string record, verdicts;
+                        bool overflow = false;
+                        Limits limits = options.test_limits;
+                        limits.isolate = true;
+                        const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
+                                                       "--out=/dev/null", "--no-exitcode", "--no-version", "--no-colors"},
+                                                      run_dir, output_path, limits, &record, 256u << 20, &overflow);
+                        Outcome replayed;
+                        if (t.started && !t.timed_out && !t.signal && !overflow) {
+                            write_file(record_path, record);
+                            replayed = run_limited({topic.replay, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
+                                                    "--out=/dev/fd/3", "--no-version", "--no-colors"},
+                                                   work_dir, replay_output, replay_limits, &verdicts);
+                        }
+                        Run r = decide(setup, t, overflow, replayed, verdicts, test, options);
                         // An exercise whose body is still the stub's todo("<name>") is not started.
                         if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
                             r.not_started = true;
                             r.message = "not started: todo(\"" + exercise.name + "\") is still in place";
                         }
                         TestResult tr{topic.chapter, topic.name, exercise.name, test.name, r.verdict, 0,
-                                      exercise.points / static_cast<double>(exercise.tests.size()), r.not_started,
-                                      relative(r.message), ""};
+                                      share(exercise.points, exercise.tests.size(), k), r.not_started, relative(r.message), ""};
                         if (tr.verdict == "pass") tr.score = tr.max_score;
                         std::string printed = read_file(output_path);
                         if (printed.size() > 500) printed = first_lines(printed, 500);
@@ -345,10 +351,9 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
         result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
         for (const auto& exercise : topic.exercises) {
             if (!selection.exercise.empty() && exercise.name != selection.exercise) continue;
-            for (const auto& test : exercise.tests)
-                result.tests.push_back({topic.chapter, topic.name, exercise.name, test.name, verdict, 0,
-                                        exercise.points / static_cast<double>(exercise.tests.size()), false,
-                                        problem, ""});
+            for (std::size_t k = 0; k < exercise.tests.size(); ++k)
+                result.tests.push_back({topic.chapter, topic.name, exercise.name, exercise.tests[k].name, verdict, 0,
+                                        share(exercise.points, exercise.tests.size(), k), false, problem, ""});
         }
     }
     for (const auto& t : result.tests) result.score += t.score, result.max_score += t.max_score;

@@ -47,7 +47,20 @@ struct Limits {
     long memory_mb = 1024;              // address space
     long output_bytes = 1 << 20;        // any file it writes, its output included
     bool forbid_processes = true;       // no fork, no threads (RLIMIT_NPROC 0)
+    bool isolate = false;               // in the sandbox (see configure_sandbox)
+    std::vector<std::string> environment;  // more NAME=value for the program
 };
+
+// The sandbox of a student's test process (sandbox.cpp). With bubblewrap: new user, PID,
+// mount, network, IPC and UTS namespaces; only /usr (read-only), a fresh /proc and /dev, an
+// empty size-limited /work as its working folder and the test binary itself (a copy, read-only)
+// are visible; no capabilities; no new processes (RLIMIT_NPROC 0 inside); and everything it
+// starts dies with it. Started as root, it first becomes the unprivileged user nobody (65534).
+// Without a working bubblewrap: as nobody when root, with the limits alone otherwise.
+enum class Isolation { namespaces, user, limits_only };
+// Probes what works here (once per run); returns a sentence for the log.
+std::string configure_sandbox();
+Isolation isolation();
 
 struct Outcome {
     bool started = false;
@@ -60,9 +73,12 @@ struct Outcome {
 
 // Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. With a
 // report, the program also gets a pipe as file descriptor 3 (/dev/fd/3), read into *report
-// while it runs: outside the output limit, and in no file the program could name.
+// while it runs (up to report_limit bytes; *report_overflow tells when more came): outside the
+// output limit, and in no file the program could name. With limits.isolate it runs in the
+// sandbox, and cwd only matters without namespaces.
 Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits, std::string* report = nullptr);
+                    const std::string& output_path, const Limits& limits, std::string* report = nullptr,
+                    std::size_t report_limit = 64u << 20, bool* report_overflow = nullptr);
 std::string signal_name(int signal);
 
 // ---- what is graded (setup.cpp) ------------------------------------------------------------
@@ -92,6 +108,9 @@ struct Topic {
     std::vector<std::string> objects;       // the grader's compiled tests
     std::vector<std::string> link;          // what a student's object is linked with
     std::vector<std::string> compile;       // compile command; @SOURCE@ and @OBJECT@ to fill in
+    std::string replay;                     // the trusted verdict binary (no student code)
+    std::vector<std::string> recorder;      // objects linked into a student's test binary
+    std::vector<std::string> wraps;         // -Wl,--wrap=<symbol>, one per API function the grader calls
 };
 
 struct Setup {
@@ -106,6 +125,9 @@ struct Setup {
 // Writes the manifest from topics.txt (build time). Returns an empty string or the error.
 std::string make_manifest(const std::string& topics_path, const std::string& points_path,
                           const std::string& out_path);
+// Writes <out_dir>/record_<topic>.cpp, replay_<topic>.cpp and wrap_<topic>.txt (build time, api.cpp).
+std::string make_api(const std::string& topic, const std::string& nm, const std::string& library,
+                     const std::vector<std::string>& objects, const std::string& out_dir);
 // Reads <dir>/topics.txt and <dir>/manifest.txt. Returns an empty string or the error.
 std::string load_setup(const std::string& dir, Setup& setup);
 const Chapter* find_chapter(const Setup& setup, const std::string& label);
@@ -114,7 +136,7 @@ std::string relative_to_root(const Setup& setup, std::string text);
 // ---- grading one submission (grade.cpp) ------------------------------------------------------
 struct Options {
     Limits test_limits;
-    Limits build_limits{120, 4096, 256L << 20, false};
+    Limits build_limits{120, 4096, 256L << 20, false, false, {}};
     long max_file_bytes = 1 << 20;
     bool keep_work = false;
 };

@@ -7,112 +7,13 @@
 #include <map>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "grading.hpp"
 
 namespace grading {
 
 namespace {
-
-// ---- a small JSON reader, enough for compile_commands.json ----------------------------------
-struct Json {
-    enum Kind { Null, String, Array, Object, Other } kind = Null;
-    std::string text;
-    std::vector<Json> items;
-    std::vector<std::pair<std::string, Json>> members;
-    const Json* get(const std::string& key) const {
-        for (const auto& [k, v] : members)
-            if (k == key) return &v;
-        return nullptr;
-    }
-};
-
-struct JsonReader {
-    const std::string& s;
-    std::size_t i = 0;
-    bool failed = false;
-    void space() {
-        while (i < s.size() && (s[i] == ' ' || s[i] == '\n' || s[i] == '\t' || s[i] == '\r')) ++i;
-    }
-    std::string string() {
-        std::string out;
-        ++i;  // the opening quote
-        while (i < s.size() && s[i] != '"') {
-            if (s[i] == '\\' && i + 1 < s.size()) {
-                const char e = s[++i];
-                if (e == 'n') out += '\n';
-                else if (e == 't') out += '\t';
-                else if (e == 'r') out += '\r';
-                else if (e == 'b') out += '\b';
-                else if (e == 'f') out += '\f';
-                else if (e == 'u' && i + 4 < s.size()) {
-                    const unsigned code = std::stoul(s.substr(i + 1, 4), nullptr, 16);
-                    i += 4;
-                    if (code < 0x80) out += static_cast<char>(code);
-                    else if (code < 0x800) out += static_cast<char>(0xC0 | (code >> 6)), out += static_cast<char>(0x80 | (code & 0x3F));
-                    else out += static_cast<char>(0xE0 | (code >> 12)), out += static_cast<char>(0x80 | ((code >> 6) & 0x3F)), out += static_cast<char>(0x80 | (code & 0x3F));
-                } else out += e;
-            } else {
-                out += s[i];
-            }
-            ++i;
-        }
-        if (i >= s.size()) failed = true;
-        ++i;
-        return out;
-    }
-    Json value() {
-        Json v;
-        space();
-        if (i >= s.size()) {
-            failed = true;
-            return v;
-        }
-        if (s[i] == '"') {
-            v.kind = Json::String;
-            v.text = string();
-        } else if (s[i] == '[') {
-            v.kind = Json::Array;
-            ++i;
-            space();
-            if (i < s.size() && s[i] == ']') return ++i, v;
-            while (!failed) {
-                v.items.push_back(value());
-                space();
-                if (i < s.size() && s[i] == ',') ++i;
-                else if (i < s.size() && s[i] == ']') return ++i, v;
-                else failed = true;
-            }
-        } else if (s[i] == '{') {
-            v.kind = Json::Object;
-            ++i;
-            space();
-            if (i < s.size() && s[i] == '}') return ++i, v;
-            while (!failed) {
-                space();
-                if (i >= s.size() || s[i] != '"') {
-                    failed = true;
-                    break;
-                }
-                std::string key = string();
-                space();
-                if (i >= s.size() || s[i] != ':') {
-                    failed = true;
-                    break;
-                }
-                ++i;
-                v.members.emplace_back(key, value());
-                space();
-                if (i < s.size() && s[i] == ',') ++i;
-                else if (i < s.size() && s[i] == '}') return ++i, v;
-                else failed = true;
-            }
-        } else {
-            v.kind = Json::Other;
-            while (i < s.size() && std::string(",]} \n\t\r").find(s[i]) == std::string::npos) v.text += s[i++];
-        }
-        return v;
-    }
-};
 
 // The compile command of <file> in compile_commands.json, made into a template.
 std::string compile_template(const std::string& compile_commands, const std::vector<std::string>& candidates,
@@ -120,21 +21,19 @@ std::string compile_template(const std::string& compile_commands, const std::vec
     bool ok = false;
     const std::string text = read_file(compile_commands, &ok);
     if (!ok) return "cannot read " + compile_commands + " (configure with CMAKE_EXPORT_COMPILE_COMMANDS=ON)";
-    JsonReader reader{text};
-    const Json all = reader.value();
-    if (reader.failed || all.kind != Json::Array) return compile_commands + " is not a JSON array";
+    const nlohmann::json all = nlohmann::json::parse(text, nullptr, false);
+    if (!all.is_array()) return compile_commands + " is not a JSON array";
     for (const auto& file : candidates) {
-        for (const auto& entry : all.items) {
-            const Json* f = entry.get("file");
-            if (!f || f->text != file) continue;
-            const Json* directory = entry.get("directory");
+        for (const auto& entry : all) {
+            if (!entry.is_object() || entry.value("file", "") != file) continue;
             std::vector<std::string> words;
-            if (const Json* arguments = entry.get("arguments")) {
-                for (const auto& a : arguments->items) words.push_back(a.text);
-            } else if (const Json* command = entry.get("command")) {
-                words = shell_split(command->text);
+            if (entry.contains("arguments") && entry["arguments"].is_array()) {
+                for (const auto& a : entry["arguments"])
+                    if (a.is_string()) words.push_back(a.get<std::string>());
+            } else {
+                words = shell_split(entry.value("command", ""));
             }
-            const std::string dir = directory ? directory->text : "";
+            const std::string dir = entry.value("directory", "");
             bool have_source = false, have_object = false;
             for (std::size_t k = 0; k < words.size(); ++k) {
                 const std::string& w = words[k];
@@ -170,7 +69,7 @@ std::string compile_template(const std::string& compile_commands, const std::vec
 
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
-    for (const char* folder : {"tests", "tests/grading", "exercises/rigid", "solutions"}) {
+    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "solutions"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
@@ -256,17 +155,19 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
         Limits limits;
         limits.wall_seconds = 60;
         limits.forbid_processes = false;
-        const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=xml", "--no-version"}, ".", work, limits);
-        const std::string xml = read_file(work);
+        const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
+        const std::string listing = read_file(work);
         std::remove(work.c_str());
         if (!o.started || o.exit_code != 0) return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
         const std::string test_file = "tests/" + t.topic + "_test.cpp";
         std::vector<Exercise> exercises;
-        for (std::size_t pos = 0; (pos = xml.find("<TestCase ", pos)) != std::string::npos; ++pos) {
-            const std::string element = xml.substr(pos, xml.find('>', pos) - pos);
-            const std::string filename = xml_attribute(element, "filename");
-            if (filename != root + "/" + test_file) continue;
-            const std::string name = xml_attribute(element, "name");
+        for (const auto& line : split(listing, '\n')) {
+            const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+            if (!j.is_object() || !j.contains("test")) continue;
+            const std::string filename = j.value("file", "");
+            // The path as the compiler saw it: absolute, or relative when a compiler cache rewrote it.
+            if (filename != root + "/" + test_file && !ends_with(filename, "/" + test_file) && filename != test_file) continue;
+            const std::string name = j.value("test", "");
             const auto colon = name.find(':');
             if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
                 return test_file + ": the test \"" + name + "\" is not named \"<function>: <property>\"";
@@ -278,7 +179,7 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
                 exercises.push_back({exercise, 1, {}});
                 e = &exercises.back();
             }
-            e->tests.push_back({name, std::stoi(xml_attribute(element, "line"))});
+            e->tests.push_back({name, j.value("line", 0)});
         }
         if (exercises.empty()) return t.reference + " lists no tests from " + test_file;
         if (!chapters_written.count(t.chapter)) {
@@ -333,6 +234,26 @@ std::string load_setup(const std::string& dir, Setup& setup) {
                     if (!item.empty()) list.push_back(item);
         }
     }
+    // Record and replay (tests/grading/CMakeLists.txt).
+    const std::string replay_facts = read_file(dir + "/replay.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/replay.txt: build the target `grading` first";
+    current.clear();
+    for (const auto& line : split(replay_facts, '\n')) {
+        const auto f = split(line, '\t');
+        if (f[0] == "topic" && f.size() > 1) current = f[1];
+        else if (current.empty() || !built.count(current)) continue;
+        else if (f[0] == "replay" && f.size() > 1) built[current].replay = f[1];
+        else if (f[0] == "recorder") {
+            for (std::size_t k = 1; k < f.size(); ++k)
+                for (const auto& item : split(f[k], ';'))
+                    if (!item.empty()) built[current].recorder.push_back(item);
+        } else if (f[0] == "wrap" && f.size() > 1) {
+            bool have = false;
+            for (const auto& symbol : split(read_file(f[1], &have), '\n'))
+                if (!trim(symbol).empty()) built[current].wraps.push_back("-Wl,--wrap=" + trim(symbol));
+            if (!have) return "cannot read " + f[1] + ": build the target `grading` first";
+        }
+    }
     for (const auto& line : split(setup.manifest_text, '\n')) {
         const auto f = split(line, '\t');
         if (f[0] == "chapter" && f.size() > 4) {
@@ -347,6 +268,8 @@ std::string load_setup(const std::string& dir, Setup& setup) {
                 compile_commands, {setup.root + "/exercises/" + t.name + ".cpp", setup.root + "/solutions/" + t.name + ".cpp"},
                 compile);
             if (!problem.empty()) return problem;
+            if (t.replay.empty() || t.recorder.empty() || t.wraps.empty())
+                return dir + "/replay.txt has no record and replay for " + t.name + ": build the target `grading` first";
             t.compile = compile;
             setup.topics.push_back(t);
         } else if (f[0] == "exercise" && f.size() > 3 && !setup.topics.empty()) {
@@ -366,6 +289,10 @@ std::string load_setup(const std::string& dir, Setup& setup) {
         all += "\n";
     }
     for (const auto& w : setup.link_flags) all += w + " ";
+    for (const auto& t : setup.topics) {
+        for (const auto& w : t.wraps) all += w + " ";
+        all += "\n";
+    }
     Limits quick;
     quick.forbid_processes = false;
     const std::string version_file = dir + "/compiler-version." + std::to_string(getpid()) + ".txt";

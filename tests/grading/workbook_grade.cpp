@@ -158,8 +158,9 @@ int grade(const Args& a) {
     std::size_t tests = 0;
     for (const auto& t : setup.topics)
         for (const auto& e : t.exercises) tests += e.tests.size();
-    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each\n", students.size(),
-                submissions.c_str(), jobs, setup.topics.size(), tests);
+    const std::string sandbox = configure_sandbox();
+    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s)\n", students.size(),
+                submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str());
     std::fflush(stdout);
 
     struct Item {
@@ -337,8 +338,10 @@ int check(const Args& a) {
             return fail("'" + key + "' is not a chapter, topic or exercise. Chapters:" + known);
         }
     }
+    const std::string sandbox = configure_sandbox();
     std::printf("Checking %s in %s with the graders (the instructor's grading run uses the same ones)\n", what.c_str(),
                 relative_to_root(setup, folder).c_str());
+    if (isolation() != Isolation::namespaces) std::printf("%s\n", sandbox.c_str());
     std::fflush(stdout);
     const std::string dir = a.out.empty() ? setup.dir + "/check" : absolute(a.out);
     make_dirs(dir);
@@ -359,6 +362,25 @@ int check(const Args& a) {
 int main(int argc, char** argv) {
     if (argc < 2) return fail(std::string("no command\n") + usage);
     const std::string command = argv[1];
+    if (command == "api") {
+        // api --topic <t> --nm <nm> --library <lib.a> --out <dir> --objects <o>... (build time)
+        std::string topic, nm, library, out;
+        std::vector<std::string> objects;
+        for (int i = 2; i < argc; ++i) {
+            const std::string o = argv[i];
+            if (o == "--objects") {
+                while (i + 1 < argc && !starts_with(argv[i + 1], "--")) objects.push_back(argv[++i]);
+            } else if (i + 1 < argc && (o == "--topic" || o == "--nm" || o == "--library" || o == "--out")) {
+                (o == "--topic" ? topic : o == "--nm" ? nm : o == "--library" ? library : out) = argv[++i];
+            } else {
+                return fail("api: unexpected argument " + o);
+            }
+        }
+        if (topic.empty() || nm.empty() || library.empty() || out.empty() || objects.empty())
+            return fail("api needs --topic, --nm, --library, --out and --objects");
+        const std::string problem = make_api(topic, nm, library, objects, out);
+        return problem.empty() ? 0 : fail(problem);
+    }
     const Args a = parse(argc, argv);
     if (command == "manifest") {
         if (a.topics.empty() || a.points.empty() || a.out.empty()) return fail(std::string("manifest needs --topics, --points and --out\n") + usage);
