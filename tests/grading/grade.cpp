@@ -413,8 +413,9 @@ std::string flat(const std::string& s) {
 }
 }  // namespace
 
-std::string results_tsv(const SubmissionResult& r) {
+std::string results_tsv(const SubmissionResult& r, const std::string& json) {
     std::string out = "fingerprint\t" + r.fingerprint + "\nstudent\t" + flat(r.student) + "\n";
+    if (!json.empty()) out += "json\t" + hex(hash(json)) + "\n";
     for (const auto& n : r.notes) out += "note\t" + flat(n) + "\n";
     for (const auto& t : r.tests) {
         char score[64], max_score[64];
@@ -436,6 +437,7 @@ bool read_results_tsv(const std::string& path, SubmissionResult& r) {
         const auto f = split(line, '\t');
         if (f[0] == "fingerprint" && f.size() > 1) r.fingerprint = f[1];
         else if (f[0] == "student" && f.size() > 1) r.student = f[1];
+        else if (f[0] == "json" && f.size() > 1) r.json_hash = f[1];
         else if (f[0] == "note" && f.size() > 1) r.notes.push_back(f[1]);
         else if (f[0] == "test" && f.size() > 9) {
             TestResult t{f[1], f[2], f[3], f[8], f[4], std::stod(f[5]), std::stod(f[6]), f[7] == "1", f[9], ""};

@@ -80,6 +80,9 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
                     const std::string& output_path, const Limits& limits, std::string* report = nullptr,
                     std::size_t report_limit = 64u << 20, bool* report_overflow = nullptr);
 std::string signal_name(int signal);
+// For a worker: SIGINT, SIGTERM or SIGHUP kills the process group run_limited is waiting for
+// (a compiler and its cc1plus, or a test and its sandbox), then ends the worker.
+void stop_children_on_signal();
 
 // ---- what is graded (setup.cpp) ------------------------------------------------------------
 struct Test {
@@ -168,6 +171,7 @@ struct TestResult {
 struct SubmissionResult {
     std::string student;
     std::string fingerprint;
+    std::string json_hash;            // of the results .json it was written with (from the .tsv)
     std::vector<TestResult> tests;
     std::vector<std::string> notes;   // one line per topic that did not build, or was refused
     double score = 0, max_score = 0;
@@ -186,7 +190,8 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options,
                                   const std::string& log_dir);
 
 std::string results_json(const Setup& setup, const SubmissionResult& result);
-std::string results_tsv(const SubmissionResult& result);
+// The completion marker: every verdict and score, and the hash of the results .json written with it.
+std::string results_tsv(const SubmissionResult& result, const std::string& json = "");
 bool read_results_tsv(const std::string& path, SubmissionResult& result);
 
 // ---- reports (report.cpp) -------------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -90,6 +91,24 @@ bool drop_to_nobody() {
 }  // namespace
 
 Isolation isolation() { return mode; }
+
+namespace {
+volatile std::sig_atomic_t running_group = 0;  // the process group of the program run_limited waits for
+void stop_and_exit(int) {
+    const pid_t group = running_group;
+    if (group > 0) kill(-group, SIGKILL);
+    _exit(1);
+}
+}  // namespace
+
+void stop_children_on_signal() {
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction action {};
+        action.sa_handler = stop_and_exit;
+        sigemptyset(&action.sa_mask);
+        sigaction(sig, &action, nullptr);
+    }
+}
 
 std::string configure_sandbox() {
     mode = Isolation::limits_only;
@@ -234,6 +253,7 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
         _exit(127);
     }
     setpgid(pid, pid);
+    running_group = pid;
     close(report[1]);
     close_program();
     if (report_text) {
@@ -280,6 +300,7 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
         pause = std::min(pause * 2, std::chrono::microseconds(10000));
     }
     kill(-pid, SIGKILL);  // anything it left behind in its group
+    running_group = 0;
     if (report_text) {
         drain();
         close(channel[0]);

@@ -9,7 +9,10 @@
 // Then proves the rest of the contract: a second run resumes (grades nothing, same class
 // files), and grading a few of them again from scratch gives byte-identical results. Prints
 // the verdict table and the time per submission.
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -30,7 +33,8 @@ struct Expect {
 };
 
 struct Case {
-    std::string name, description, make, topic = "rotation", body;
+    std::string name, description, make, topic = "rotation", body, base = "solutions", student;
+    bool needs_root = false, needs_namespaces = false;
     std::vector<std::string> replace;
     std::vector<Expect> expects;
     std::map<std::string, double> scores;
@@ -48,6 +52,9 @@ Case read_case(const std::string& path, const std::string& name) {
         if ((v = field("case")) != "\x01") c.description = v;
         else if ((v = field("make")) != "\x01") c.make = v;
         else if ((v = field("topic")) != "\x01") c.topic = v;
+        else if ((v = field("base")) != "\x01") c.base = v;
+        else if ((v = field("needs")) != "\x01") c.needs_root = v.find("root") != std::string::npos,
+                                                   c.needs_namespaces = v.find("namespaces") != std::string::npos;
         else if ((v = field("replace")) != "\x01") c.replace.push_back(v);
         else if ((v = field("expect")) != "\x01") {
             const auto parts = split(v, '|');
@@ -75,6 +82,57 @@ const Expect* expectation(const Case& c, const TestResult& t) {
 }
 
 std::string quote(const std::string& s) { return "'" + replace_all(s, "'", "'\\''") + "'"; }
+
+// Starts `workbook_grade grade ...` with its output into a file; returns its process id.
+pid_t start_grading(const std::vector<std::string>& argv, const std::string& output) {
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int fd = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    return pid;
+}
+
+// Waits until the file holds the text (or the process ended, or the time is up).
+bool wait_for(const std::string& file, const std::string& text, pid_t pid, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+        if (read_file(file).find(text) != std::string::npos) return true;
+        if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+        usleep(20000);
+    }
+    return false;
+}
+
+// Waits for the process at most `seconds`; its exit status, or -1 when it did not end.
+int wait_exit(pid_t pid, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    int status = 0;
+    while (std::chrono::steady_clock::now() < end) {
+        if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        usleep(20000);
+    }
+    return -1;
+}
+
+// Processes whose command line mentions the text (left behind by a run that should be gone).
+std::vector<std::string> processes_mentioning(const std::string& text) {
+    std::vector<std::string> found;
+    for (const auto& name : list_dir("/proc")) {
+        if (name.find_first_not_of("0123456789") != std::string::npos || std::stoi(name) == getpid()) continue;
+        std::string cmdline = read_file("/proc/" + name + "/cmdline");
+        for (char& c : cmdline)
+            if (c == '\0') c = ' ';
+        if (cmdline.find(text) != std::string::npos) found.push_back(name + ": " + first_lines(cmdline, 200));
+    }
+    return found;
+}
 
 bool same_file(const std::string& a, const std::string& b) {
     bool ok_a = false, ok_b = false;
@@ -105,15 +163,29 @@ int main(int argc, char** argv) {
     if (const auto problem = load_setup(setup_dir, setup); !problem.empty())
         return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
 
+    const std::string sandbox = configure_sandbox();
+    const bool root = geteuid() == 0, namespaces = isolation() == Isolation::namespaces;
+    std::printf("== %s%s\n", sandbox.c_str(), root ? " (running as root)" : "");
     std::vector<Case> cases;
-    for (const auto& name : list_dir(cases_dir))
-        if (ends_with(name, ".cpp")) cases.push_back(read_case(cases_dir + "/" + name, name.substr(0, name.size() - 4)));
+    std::vector<std::string> skipped;
+    for (const auto& name : list_dir(cases_dir)) {
+        if (!ends_with(name, ".cpp")) continue;
+        Case c = read_case(cases_dir + "/" + name, name.substr(0, name.size() - 4));
+        // A trick that needs root (to prove what root cannot do) or the namespaces (to prove what
+        // they hide) is graded only where that holds, and named when it is not.
+        if ((c.needs_root && !root) || (c.needs_namespaces && !namespaces)) {
+            skipped.push_back(c.name);
+            continue;
+        }
+        cases.push_back(c);
+    }
     if (cases.empty()) return std::fprintf(stderr, "grading_suite: no cases in %s\n", cases_dir.c_str()), 2;
 
     // The submissions: one per case, or <count> cycling through them.
     const long max_file_kb = 64;
     remove_tree(work);
     const std::string subs = work + "/submissions", out = work + "/out";
+
     make_dirs(subs);
     std::map<std::string, const Case*> case_of;
     const int n = count > 0 ? count : static_cast<int>(cases.size());
@@ -142,11 +214,18 @@ int main(int argc, char** argv) {
         } else if (!c.make.empty()) {
             return std::fprintf(stderr, "grading_suite: %s: unknown make: %s\n", c.name.c_str(), c.make.c_str()), 2;
         } else {
-            std::string text = "// Generated by grading_suite from tests/grading/cases/" + c.name + ".cpp and solutions/" + c.topic + ".cpp\n";
+            // The case's code after solutions/<topic>.cpp (or the stub, with base: stubs).
+            const std::string base = c.base == "stubs" ? setup.root + "/exercises/" + c.topic + ".cpp" : reference;
+            std::string text = "// Generated by grading_suite from tests/grading/cases/" + c.name + ".cpp and " +
+                               relative_to_root(setup, base) + "\n";
             for (const auto& f : c.replace) text += "#define " + f + " " + f + "_reference_unused\n";
-            text += read_file(reference);
+            text += read_file(base);
             for (const auto& f : c.replace) text += "#undef " + f + "\n";
-            write_file(file, text + "\n// The case:\n" + replace_all(c.body, "@ROOT@", setup.root));
+            std::string body = replace_all(c.body, "@ROOT@", setup.root);
+            body = replace_all(body, "@BUILD@", setup.build);
+            body = replace_all(body, "@OUT@", out);
+            body = replace_all(body, "@STUDENT@", student);
+            write_file(file, text + "\n// The case:\n" + body);
         }
     }
 
@@ -155,11 +234,26 @@ int main(int argc, char** argv) {
     const std::string grade = quote(harness) + " grade --setup " + quote(setup_dir) + " " + quote(subs) + " ";
     std::printf("== Grading %d bad and good submissions\n", n);
     std::fflush(stdout);
-    const auto start = std::chrono::steady_clock::now();
-    const int status = std::system((grade + quote(out) + options).c_str());
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<std::string> problems;
+    std::vector<std::string> run_args = {harness, "grade", "--setup", setup_dir, subs, out, "-j", std::to_string(jobs),
+                                         "--timeout", timeout, "--memory", "512", "--max-file-size", std::to_string(max_file_kb)};
+    const auto start = std::chrono::steady_clock::now();
+    const std::string main_log = work + "/grade.txt", overlap_log = work + "/overlap.txt";
+    const pid_t main_run = start_grading(run_args, main_log);
+    // An overlapping run on the same out folder, while the first one grades: refused, with the reason.
+    if (!wait_for(main_log, "Grading ", main_run, 60)) problems.push_back("the grading run did not start: " + read_file(main_log));
+    const int overlap = wait_exit(start_grading(run_args, overlap_log), 60);
+    if (overlap != 2 || read_file(overlap_log).find("another grading run is writing to") == std::string::npos)
+        problems.push_back("an overlapping run on the same out folder was not refused (status " + std::to_string(overlap) +
+                           "): " + read_file(overlap_log));
+    const int status = wait_exit(main_run, 3600);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s", read_file(main_log).c_str());
+    std::printf("== An overlapping run on the same out folder: %s", read_file(overlap_log).c_str());
     if (status != 0) problems.push_back("the grading run failed (status " + std::to_string(status) + ")");
+    // Every result as first written, to prove below that nothing rewrote one later.
+    std::map<std::string, std::string> written;
+    for (const auto& name : list_dir(out + "/results")) written[name] = read_file(out + "/results/" + name);
 
     // Every verdict, message and partial score as expected.
     struct Row {
@@ -259,6 +353,45 @@ int main(int argc, char** argv) {
             problems.push_back(student + ": the check printed no progress: " + read_file(work + "/check.txt"));
         break;
     }
+
+    // Interrupted: SIGTERM to the main process while it grades stops its workers at once and
+    // leaves no result of theirs and no process behind; running again grades them as before.
+    {
+        std::vector<std::string> some;
+        for (const auto& [student, c] : case_of)
+            if (some.size() < 3 && (c->name == "partial" || c->name == "fail" || c->name == "crash" || c->name == "exit0"))
+                some.push_back(student);
+        std::string list;
+        for (const auto& s : some) list += (list.empty() ? "" : ",") + s;
+        const std::string out3 = work + "/out-interrupted", log3 = work + "/interrupted.txt";
+        std::vector<std::string> args = run_args;
+        args[5] = out3;
+        args.insert(args.end(), {"--only", list});
+        std::printf("== SIGTERM to a run grading %s, then the run again\n", list.c_str());
+        const pid_t run = start_grading(args, log3);
+        if (!wait_for(log3, "Grading ", run, 60)) problems.push_back("the run to interrupt did not start: " + read_file(log3));
+        usleep(1500000);  // compiling and testing by now
+        kill(run, SIGTERM);
+        const int code = wait_exit(run, 10);
+        std::printf("%s", read_file(log3).c_str());
+        if (code != 128 + SIGTERM || read_file(log3).find("Interrupted by SIGTERM") == std::string::npos)
+            problems.push_back("the interrupted run did not stop as it should (status " + std::to_string(code) + ")");
+        usleep(300000);
+        for (const auto& p : processes_mentioning(out3)) problems.push_back("left running after the interrupted run: " + p);
+        for (const auto& name : list_dir(out3 + "/.work")) problems.push_back("left in .work by the interrupted run: " + name);
+        const int again = wait_exit(start_grading(args, log3), 600);
+        if (again != 0) problems.push_back("the run after the interrupted one failed: " + read_file(log3));
+        for (const auto& s : some)
+            for (const char* ext : {".json", ".tsv"})
+                if (!same_file(out + "/results/" + s + ext, out3 + "/results/" + s + ext))
+                    problems.push_back(s + ext + ": the run after an interrupted one differs from the first run");
+    }
+
+    // Nothing rewrote a result after it was written (a process that outlived its test, say).
+    for (const auto& [name, text] : written)
+        if (read_file(out + "/results/" + name) != text) problems.push_back("results/" + name + " changed after it was written");
+    for (const auto& name : skipped)
+        std::printf("== Not run here: the case %s (it needs %s)\n", name.c_str(), root ? "the namespaces sandbox" : "root");
 
     // The table, and the time per submission.
     std::printf("\n| Submission | What it does | Exercise | Expected | Got | Tests | Score |\n|---|---|---|---|---|---:|---:|\n");

@@ -9,7 +9,11 @@
 // <out>/class.csv, <out>/summary.md and <out>/run.json (timings: the only file that changes
 // from run to run). Submissions are graded in parallel, each in its own worker process; a
 // submission whose result is already there for the same inputs is not graded again.
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/time.h>
@@ -18,6 +22,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -29,6 +34,9 @@
 using namespace grading;
 
 namespace {
+
+volatile std::sig_atomic_t stop_signal = 0;
+void on_stop(int sig) { stop_signal = sig; }
 
 const char* usage =
     "usage:\n"
@@ -43,7 +51,8 @@ const char* usage =
     "  --build-timeout <s>    limit of each compile and link (default 120)\n"
     "  --build-memory <MB>    address space of the compiler (default 4096)\n"
     "  --max-file-size <KB>   largest exercise file taken from a submission (default 1024)\n"
-    "  --only <name>[,<name>] grade only these submissions (for sharding; no class files)\n"
+    "  --only <name>          grade only this submission (repeat it, or join names with commas;\n"
+    "                         a name that itself holds a comma is taken whole); for sharding: no class files\n"
     "  --force                grade again even when a result for the same inputs exists\n"
     "  --keep-work            keep each submission's build folder (<out>/.work/)\n";
 
@@ -65,7 +74,7 @@ double number(const std::string& option, const char* value) {
 struct Args {
     std::string setup, topics, points, out, folder;
     std::vector<std::string> positional;
-    std::set<std::string> only;
+    std::vector<std::string> only;  // as given: a name, or names joined by commas
     int jobs = 0;
     bool force = false;
     Options options;
@@ -97,10 +106,8 @@ Args parse(int argc, char** argv) {
         else if (o == "--build-timeout") a.options.build_limits.wall_seconds = number(o, take().c_str());
         else if (o == "--build-memory") a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
         else if (o == "--max-file-size") a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-        else if (o == "--only") {
-            for (const auto& name : split(take(), ','))
-                if (!name.empty()) a.only.insert(name);
-        } else if (o == "--force") a.force = true;
+        else if (o == "--only") a.only.push_back(take());
+        else if (o == "--force") a.force = true;
         else if (o == "--keep-work") a.options.keep_work = true;
         else if (o == "-h" || o == "--help") std::printf("%s", usage), std::exit(0);
         else if (starts_with(o, "-") && o.size() > 1) std::fprintf(stderr, "workbook_grade: unknown option %s\n%s", o.c_str(), usage), std::exit(2);
@@ -133,23 +140,42 @@ int grade(const Args& a) {
 
     std::vector<std::string> students, ignored;
     for (const auto& name : list_dir(submissions)) {
-        if (starts_with(name, ".")) continue;
         const std::string path = submissions + "/" + name;
         struct stat st;
         if (lstat(path.c_str(), &st) != 0) continue;
-        if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
+        // A hidden folder (.git, .DS_Store, an editor's backup) is not a student: it is named, not graded.
+        if (starts_with(name, ".")) ignored.push_back(name + ": a hidden name (it starts with '.'), not graded; rename it to grade it");
+        else if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
         else ignored.push_back(name + ": not a folder");
     }
-    for (const auto& name : a.only)
-        if (std::find(students.begin(), students.end(), name) == students.end())
-            return fail("--only " + name + ": no such submission in " + submissions);
+    std::set<std::string> only;
+    for (const auto& value : a.only) {
+        if (std::find(students.begin(), students.end(), value) != students.end()) {
+            only.insert(value);
+            continue;
+        }
+        for (const auto& name : split(value, ',')) {
+            if (name.empty()) continue;
+            if (std::find(students.begin(), students.end(), name) == students.end())
+                return fail("--only " + name + ": no such submission in " + submissions);
+            only.insert(name);
+        }
+    }
     if (!a.only.empty()) {
         std::vector<std::string> kept;
         for (const auto& s : students)
-            if (a.only.count(s)) kept.push_back(s);
+            if (only.count(s)) kept.push_back(s);
         students = kept;
     }
-    for (const char* sub : {"results", "logs", ".work"})
+    if (!make_dirs(out)) return fail("cannot create " + out);
+    // One run at a time on an out folder: a whole-class run holds its lock alone; shards (--only)
+    // share it with each other, and each submission has a lock of its own.
+    const int lock = open((out + "/.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock < 0) return fail("cannot create " + out + "/.lock");
+    if (flock(lock, (a.only.empty() ? LOCK_EX : LOCK_SH) | LOCK_NB) != 0)
+        return fail("another grading run is writing to " + out + " (it holds " + out +
+                    "/.lock); wait for it to finish, or stop it, then run again");
+    for (const char* sub : {"results", "logs", ".work", ".locks"})
         if (!make_dirs(out + "/" + sub)) return fail("cannot create " + out + "/" + sub);
     write_file(out + "/manifest.txt", setup.manifest_text);
 
@@ -179,20 +205,21 @@ int grade(const Args& a) {
         item.fingerprint = fingerprint(setup, a.options, item.files, Selection{}.key());
         SubmissionResult previous;
         const std::string base = out + "/results/" + s;
+        // The .tsv is written last, by a worker that finished: it marks a complete result.
         if (!a.force && read_results_tsv(base + ".tsv", previous) && previous.fingerprint == item.fingerprint &&
-            is_directory(out + "/results") && !read_file(base + ".json").empty()) {
+            previous.json_hash == hex(hash(read_file(base + ".json")))) {
             item.resumed = item.ok = true;
             item.result = previous;
-            // When it was graded, it took this long.
-            for (const auto& line : split(read_file(out + "/logs/" + s + "/time.txt"), '\n')) {
-                const auto f = split(line, ' ');
-                if (f.size() == 2 && f[0] == "wall_seconds") item.seconds = std::atof(f[1].c_str());
-                if (f.size() == 2 && f[0] == "cpu_seconds") item.cpu = std::atof(f[1].c_str());
-            }
         }
         items.push_back(std::move(item));
     }
 
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction action {};
+        action.sa_handler = on_stop;
+        sigemptyset(&action.sa_mask);
+        sigaction(sig, &action, nullptr);  // no SA_RESTART: waiting stops at once
+    }
     const auto start = std::chrono::steady_clock::now();
     std::map<pid_t, std::pair<std::size_t, std::chrono::steady_clock::time_point>> running;
     std::size_t next = 0, done = 0;
@@ -223,11 +250,21 @@ int grade(const Args& a) {
             const pid_t pid = fork();
             if (pid < 0) return fail("fork failed");
             if (pid == 0) {
-                const SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{},
-                                                            out + "/.work/" + item.name, out + "/logs/" + item.name);
-                const std::string base = out + "/results/" + item.name;
-                const bool written = write_file(base + ".json", results_json(setup, r)) &&
-                                     write_file(base + ".tsv", results_tsv(r));  // the .tsv last: it marks completion
+                stop_children_on_signal();
+                prctl(PR_SET_PDEATHSIG, SIGTERM);  // the main process is gone: so is its worker, and what it runs
+                // Another run (a shard) grading the same submission holds its lock: leave it alone.
+                const int mine = open((out + "/.locks/" + item.name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+                if (mine < 0 || flock(mine, LOCK_EX | LOCK_NB) != 0) _exit(3);
+                // Everything is made in a folder of this worker's own and published when complete:
+                // the logs, then results/<student>.json, then the .tsv, which marks completion.
+                const std::string work = out + "/.work/" + item.name + "." + std::to_string(getpid());
+                const SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{}, work,
+                                                            work + ".logs");
+                const std::string base = out + "/results/" + item.name, logs = out + "/logs/" + item.name;
+                remove_tree(logs);
+                bool written = std::rename((work + ".logs").c_str(), logs.c_str()) == 0;
+                const std::string json = results_json(setup, r);
+                written = written && write_file(base + ".json", json) && write_file(base + ".tsv", results_tsv(r, json));
                 std::fflush(stdout);
                 _exit(written ? 0 : 1);
             }
@@ -235,9 +272,33 @@ int grade(const Args& a) {
             ++next;
         }
         if (running.empty()) break;
+        if (stop_signal) {
+            // Interrupted: stop every worker (their tests and compilers die with them) and keep
+            // nothing of theirs; what was complete stays.
+            for (const auto& [pid, slot] : running) kill(pid, SIGTERM);
+            for (const auto& [pid, slot] : running) {
+                for (int k = 0; k < 200 && waitpid(pid, nullptr, WNOHANG) == 0; ++k) usleep(10000);
+                kill(pid, SIGKILL);
+                while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {}
+                const std::string name = items[slot.first].name;
+                remove_tree(out + "/.work/" + name + "." + std::to_string(pid));
+                remove_tree(out + "/.work/" + name + "." + std::to_string(pid) + ".logs");
+            }
+            rmdir((out + "/.work").c_str());
+            std::printf("Interrupted by %s: %zu submissions stopped, no result written for them; %zu graded before. "
+                        "Run again to grade the rest.\n",
+                        signal_name(stop_signal).c_str(), running.size(), done);
+            std::fflush(stdout);
+            return 128 + stop_signal;
+        }
         int status = 0;
         rusage usage{};
-        const pid_t pid = wait4(-1, &status, 0, &usage);
+        const pid_t pid = wait4(-1, &status, WNOHANG, &usage);
+        if (pid == 0) {
+            pollfd none{-1, 0, 0};
+            poll(&none, 0, 20);
+            continue;
+        }
         if (pid < 0) {
             if (errno == EINTR) continue;
             break;
@@ -249,9 +310,16 @@ int grade(const Args& a) {
         item.cpu = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
         running.erase(it);
         item.graded = true;
-        make_dirs(out + "/logs/" + item.name);
-        write_file(out + "/logs/" + item.name + "/time.txt", "wall_seconds " + format_number(item.seconds) +
-                                                                 "\ncpu_seconds " + format_number(item.cpu) + "\n");
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 3) {
+            item.graded = false;
+            item.result = SubmissionResult{};
+            item.result.student = item.name;
+            item.result.notes.push_back("not graded: another grading run is grading it now");
+            std::printf("[%*zu/%zu] %-24s being graded by another run: skipped\n",
+                        static_cast<int>(std::to_string(total).size()), ++done, total, item.name.c_str());
+            std::fflush(stdout);
+            continue;
+        }
         item.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
                   read_results_tsv(out + "/results/" + item.name + ".tsv", item.result);
         if (!item.ok) {
@@ -345,6 +413,9 @@ int check(const Args& a) {
     std::fflush(stdout);
     const std::string dir = a.out.empty() ? setup.dir + "/check" : absolute(a.out);
     make_dirs(dir);
+    const int lock = open((dir + "/.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0)
+        return fail("another check is running in " + dir + "; wait for it to finish");
     const auto files = collect_files(setup, a.options, folder);
     const SubmissionResult r = grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
     write_file(dir + "/results.json", results_json(setup, r));

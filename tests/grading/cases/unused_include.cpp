@@ -1,0 +1,3 @@
+// case: an honest solution that includes doctest.h and uses nothing from it: allowed
+// expect: * | pass
+#include <doctest/doctest.h>
