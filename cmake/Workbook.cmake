@@ -372,7 +372,7 @@ function(workbook_stub_gate)
   get_property(args GLOBAL PROPERTY WORKBOOK_GATE_ARGS)
   add_test(NAME "stub gate: every grading test passes on solutions and fails on the stubs"
            COMMAND stub_gate ${args})
-  # Both gate tests write stub_gate_<topic>_*.xml in the build folder: never run them at once.
+  # Both gate tests write stub_gate_<topic>_*.jsonl in the build folder: never run them at once.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
                        PROPERTIES LABELS "gate" TIMEOUT 600 RESOURCE_LOCK stub_gate_xml)
   # The gate itself must be able to fail: handed the reference as if it were the stubs,
@@ -381,10 +381,10 @@ function(workbook_stub_gate)
   list(GET args 1 reference)
   add_test(NAME "stub gate: fails when a grader passes on its stubs"
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
-  # Both gate tests write stub_gate_<topic>_*.xml in the same folder: never at the same time.
+  # Both gate tests write stub_gate_<topic>_*.jsonl in the same folder: never at the same time.
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
                        LABELS "gate" WILL_FAIL TRUE)
-  # Both write stub_gate_<topic>_*.xml in the build folder: never at the same time.
+  # Both write stub_gate_<topic>_*.jsonl in the build folder: never at the same time.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
                        "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_xml)
 endfunction()

@@ -51,6 +51,7 @@ REGISTER_LISTENER("reseed", 1, Reseed);
 //   {"event": "message", "file", "line", "text", "severity"}   MESSAGE, WARN, FAIL
 //   {"event": "exception", "text": ..., "crash": bool}      what escaped the test case
 //   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "replay": ...}
+//   {"event": "run", "cases": n, "failed": n}               the run is over
 struct Verdicts : doctest::IReporter {
     const doctest::ContextOptions& opt;
     const doctest::TestCaseData* current = nullptr;
@@ -78,7 +79,9 @@ struct Verdicts : doctest::IReporter {
             emit({{"test", q.data[i]->m_name}, {"file", text(q.data[i]->m_file)}, {"line", q.data[i]->m_line}});
     }
     void test_run_start() override {}
-    void test_run_end(const doctest::TestRunStats&) override {}
+    void test_run_end(const doctest::TestRunStats& st) override {
+        emit({{"event", "run"}, {"cases", st.numTestCasesPassingFilters}, {"failed", st.numTestCasesFailed}});
+    }
     void test_case_start(const doctest::TestCaseData& t) override {
         current = &t;
         emit({{"event", "start"}, {"name", t.m_name}, {"file", text(t.m_file)}, {"line", t.m_line}});

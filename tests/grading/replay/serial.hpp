@@ -1,6 +1,6 @@
 // The record of one test: what the student's API functions returned for the grader's inputs,
 // written by the student's process (record.cpp) and read back by the trusted replay process
-// (replay.cpp). See tests/grading/replay/README.md for the design.
+// (replay.cpp). The design: README.md, "Grading a class", and record.hpp and replay.hpp here.
 //
 // Values are written exactly, as their raw bytes (a double keeps every bit, NaN included), with
 // no type tags: both sides know every type from the same generated signatures. The types are
