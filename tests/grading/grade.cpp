@@ -1,7 +1,7 @@
 // Grading one submission: take its exercise files (and nothing else), build each topic on its
 // own against the instructor's prebuilt objects, run every test in its own process, and decide
-// each verdict from the XML file doctest writes for the harness, never from what the student's
-// code prints.
+// each verdict from the replay of its record in a process that runs no student code, never from
+// anything the student's code prints or reports.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>

@@ -7,8 +7,10 @@
 // test, listed from the reference graders). A submission is a folder of exercises/<topic>.cpp
 // files. Each topic file is compiled alone, with the exact flags of the build, and linked with
 // the instructor's prebuilt objects: the grader's tests, the doctest main and the reference
-// libraries of the topic's dependencies. Every test then runs in its own process, under
-// limits, and its verdict comes from the XML file doctest writes for the harness.
+// libraries of the topic's dependencies, and the topic's recorder. Every test then runs in its
+// own sandboxed process, which only records what the student's functions returned; its verdict
+// comes from the trusted replay binary, which runs the same test on that record (api.cpp,
+// replay/), and from how the student's process ended.
 #pragma once
 
 #include <cstdint>
@@ -38,8 +40,6 @@ void remove_tree(const std::string& path);
 bool is_directory(const std::string& path);  // a real folder, not a symbolic link to one
 std::vector<std::string> list_dir(const std::string& path);  // sorted names, without . and ..
 std::vector<std::string> shell_split(const std::string& command);
-std::string decode_xml(std::string s);
-std::string xml_attribute(const std::string& element, const std::string& name);  // name="value" in a tag
 
 // ---- running a program under limits (sandbox.cpp) -----------------------------------------
 struct Limits {

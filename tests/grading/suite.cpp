@@ -251,7 +251,9 @@ int main(int argc, char** argv) {
     std::printf("%s", read_file(main_log).c_str());
     std::printf("== An overlapping run on the same out folder: %s", read_file(overlap_log).c_str());
     if (status != 0) problems.push_back("the grading run failed (status " + std::to_string(status) + ")");
-    // Every result as first written, to prove below that nothing rewrote one later.
+    // The first run's timings (run.json is rewritten by every run), and every result as first
+    // written, to prove below that nothing rewrote one later.
+    write_file(work + "/first-run.json", read_file(out + "/run.json"));
     std::map<std::string, std::string> written;
     for (const auto& name : list_dir(out + "/results")) written[name] = read_file(out + "/results/" + name);
 
@@ -399,8 +401,8 @@ int main(int argc, char** argv) {
         std::printf("| %s | %s | %s | %s | %s | %d | %s / %s |\n", row.student.c_str(), row.description.c_str(),
                     row.exercise.c_str(), row.expected.c_str(), row.got.c_str(), row.tests, format_number(row.score).c_str(),
                     format_number(row.max_score).c_str());
-    std::printf("\n%d submissions graded with -j %d in %s s: %s s per submission (run.json has each one's time)\n", n, jobs,
-                format_number(wall).c_str(), format_number(wall / n).c_str());
+    std::printf("\n%d submissions graded with -j %d in %s s: %s s per submission (%s/first-run.json has each one's time)\n", n, jobs,
+                format_number(wall).c_str(), format_number(wall / n).c_str(), work.c_str());
     if (!problems.empty()) {
         std::printf("\ngrading suite FAILED:\n");
         for (const auto& p : problems) std::printf("  %s\n", p.c_str());

@@ -235,20 +235,4 @@ std::vector<std::string> shell_split(const std::string& command) {
     return words;
 }
 
-std::string decode_xml(std::string s) {
-    const std::pair<const char*, const char*> entities[] = {
-        {"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}};
-    for (const auto& [from, to] : entities) s = replace_all(s, from, to);
-    return s;
-}
-
-std::string xml_attribute(const std::string& element, const std::string& name) {
-    const std::string key = " " + name + "=\"";
-    const auto p = element.find(key);
-    if (p == std::string::npos) return {};
-    const auto q = element.find('"', p + key.size());
-    if (q == std::string::npos) return {};
-    return decode_xml(element.substr(p + key.size(), q - p - key.size()));
-}
-
 }  // namespace grading
