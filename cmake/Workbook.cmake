@@ -199,9 +199,11 @@ endfunction()
 #                  [SMOKE_ARGS <arg>...])
 #
 # Links only what it names: the topics it uses, the kit, and the figure helper (Boost and
-# gnuplot-iostream) only with FIGURES. ARGS are the options the main job runs it with.
-# Registers a smoke test (scene.<name>) that runs it with --json and checks its report and
-# figures; SMOKE_ARGS are added for that test only (a lighter run of a long scene).
+# gnuplot-iostream) only with FIGURES. ARGS are the options of its run `default`, the one
+# `cmake/workbook run` makes and the book quotes (value markers with run=default). Registers a
+# smoke test (scene.<name>) that runs it with --json and checks its report and figures;
+# SMOKE_ARGS are added for that test only (a lighter run of a long scene, which the book never
+# quotes).
 function(workbook_scene name)
   cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS;SMOKE_ARGS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
@@ -234,6 +236,29 @@ function(workbook_scene name)
                        FIXTURES_SETUP scene_reports)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_LIST "${chapter}|${name}|$<TARGET_FILE:${name}>${args}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_TARGETS ${name})
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_RUN_LIST "${name}|${chapter}|default${args}")
+endfunction()
+
+# Another run of a scene that the book quotes (value markers with run=<run>): a long one that
+# `cmake/workbook run` does not make, e.g. a benchmark's full sweep. Call it in the scene's
+# chapter folder, after workbook_scene(). The target run-<run> makes it; its figures and report
+# go to <build>/figures/<chapter>/<run>/, and update-figures commits them like the others.
+#
+#   workbook_scene_run(<scene> <run> ARGS <arg>...)
+function(workbook_scene_run scene run)
+  cmake_parse_arguments(R "" "" "ARGS" ${ARGN})
+  get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+  if(run STREQUAL "default" OR NOT run MATCHES "^[a-z][a-z0-9_]*$")
+    message(FATAL_ERROR "workbook_scene_run(${scene} ${run}): a run's name is lower case, digits and _, not 'default'")
+  endif()
+  set(args "")
+  foreach(a IN LISTS R_ARGS)
+    string(APPEND args "|${a}")
+  endforeach()
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_RUN_LIST "${scene}|${chapter}|${run}${args}")
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_EXTRA_RUNS "${run}")
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_EXTRA_RUN_${run} "${chapter}|${scene}|$<TARGET_FILE:${scene}>${args}")
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_EXTRA_RUN_TARGETS_${run} ${scene})
 endfunction()
 
 # A bad-input check: the scene must exit with status 2, say MESSAGE (a regex) on stderr,
@@ -274,31 +299,68 @@ function(workbook_chapters)
 endfunction()
 
 # ------------------------------------------------------------------------------------------
-# The main job (target `workbook`): run every scene, write every figure and the report of
-# each scene's error against its run time. Call once, after every scene is declared.
+# The main job (target `workbook`): run every scene (its run `default`), write every figure and
+# the report of each scene's error against its run time, then render the book from that run.
+# Everything goes to the build folder: <build>/figures/<chapter>/ (figures and each scene's JSON
+# report), <build>/report/ (report.md, scenes.json), <build>/book/. The committed figures/
+# change only through the target update-figures (reference solutions only), which a maintainer
+# runs after a run worth keeping. Targets run-<run> make the runs of workbook_scene_run().
+# Call once, after every scene is declared.
 function(workbook_main_job)
   get_property(scenes GLOBAL PROPERTY WORKBOOK_SCENE_LIST)
   get_property(scene_targets GLOBAL PROPERTY WORKBOOK_SCENE_TARGETS)
+  get_property(runs GLOBAL PROPERTY WORKBOOK_RUN_LIST)
   string(REPLACE ";" "\n" scene_lines "${scenes}")
   file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/report/scenes.txt" CONTENT "${scene_lines}\n")
-  if(WORKBOOK_IMPL STREQUAL "solutions" AND NOT WORKBOOK_TOPICS)
-    set(figures "${WORKBOOK_ROOT}/figures")     # the committed figures, from the reference
-  else()
-    set(figures "${CMAKE_BINARY_DIR}/figures")  # a student's figures never overwrite them
-  endif()
+  # Every run the book may quote: scene|chapter|run|arg|... (read by cmake/tools/).
+  string(REPLACE ";" "\n" run_lines "${runs}")
+  file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/runs.txt" CONTENT "${run_lines}\n")
+  set(figures "${CMAKE_BINARY_DIR}/figures")
   set_property(GLOBAL PROPERTY WORKBOOK_FIGURES_DIR "${figures}")
   # After the scenes, the book: rendered with the numbers and figures of this very run.
-  set(book "$<TARGET_FILE:book_tool>|--render|${WORKBOOK_ROOT}|--values|${CMAKE_BINARY_DIR}/report"
+  set(book "$<TARGET_FILE:book_tool>|--render|${WORKBOOK_ROOT}|--runs|${CMAKE_BINARY_DIR}/runs.txt"
            "--figures|${figures}|--out|${CMAKE_BINARY_DIR}/book|--pandoc|${PANDOC_EXECUTABLE}"
            "--label|scenes run by cmake/workbook run on the ${WORKBOOK_IMPL} implementation")
   string(REPLACE ";" "|" book "${book}")
   add_custom_target(workbook
-    COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/scenes.txt
+    COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/scenes.txt -DRUN=default
             -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report
             -DIMPL=${WORKBOOK_IMPL} "-DBOOK=${book}" -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
     DEPENDS ${scene_targets} book_tool
     USES_TERMINAL VERBATIM
-    COMMENT "Running every scene: figures in ${figures}, report in ${CMAKE_BINARY_DIR}/report")
+    COMMENT "Running every scene: figures and reports in ${figures}, the error/run-time report in ${CMAKE_BINARY_DIR}/report")
+
+  get_property(extra GLOBAL PROPERTY WORKBOOK_EXTRA_RUNS)
+  list(REMOVE_DUPLICATES extra)
+  foreach(run IN LISTS extra)
+    get_property(lines GLOBAL PROPERTY WORKBOOK_EXTRA_RUN_${run})
+    get_property(targets GLOBAL PROPERTY WORKBOOK_EXTRA_RUN_TARGETS_${run})
+    string(REPLACE ";" "\n" lines "${lines}")
+    file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/report/${run}/scenes.txt" CONTENT "${lines}\n")
+    add_custom_target(run-${run}
+      COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/${run}/scenes.txt -DRUN=${run}
+              -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report/${run} -DIMPL=${WORKBOOK_IMPL}
+              -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
+      DEPENDS ${targets}
+      USES_TERMINAL VERBATIM
+      COMMENT "The run '${run}': figures and reports in ${figures}/<chapter>/${run}")
+  endforeach()
+
+  # The maintainer's target: the last run's figures and reports become the committed ones
+  # (figures/), and the numbers in the prose follow them. Only from the reference solutions.
+  if(WORKBOOK_IMPL STREQUAL "solutions" AND NOT WORKBOOK_TOPICS)
+    add_custom_target(update-figures
+      COMMAND ${CMAKE_COMMAND} -DFROM=${figures} -DTO=${WORKBOOK_ROOT}/figures -DREPORT=${CMAKE_BINARY_DIR}/report
+              -DSNIPPETS=$<TARGET_FILE:snippets> -DROOT=${WORKBOOK_ROOT} -DRUNS=${CMAKE_BINARY_DIR}/runs.txt
+              -P "${WORKBOOK_ROOT}/cmake/update_figures.cmake"
+      DEPENDS snippets
+      USES_TERMINAL VERBATIM
+      COMMENT "Committing the last run's figures and reports to figures/, and their numbers to the prose")
+  else()
+    add_custom_target(update-figures
+      COMMAND ${CMAKE_COMMAND} -E echo "update-figures: the committed figures come from the reference solutions only (this build: WORKBOOK_IMPL=${WORKBOOK_IMPL} ${WORKBOOK_TOPICS})"
+      COMMAND ${CMAKE_COMMAND} -E false)
+  endif()
 endfunction()
 
 # ------------------------------------------------------------------------------------------
@@ -309,7 +371,7 @@ endfunction()
 function(workbook_book)
   get_property(figures GLOBAL PROPERTY WORKBOOK_FIGURES_DIR)
   set(root "${WORKBOOK_ROOT}")
-  set(reports "${CMAKE_BINARY_DIR}/smoke/reports")
+  set(runs "${CMAKE_BINARY_DIR}/runs.txt")
 
   add_executable(snippets "${root}/cmake/tools/snippets.cpp")
   add_executable(book_tool "${root}/cmake/tools/book.cpp")
@@ -319,46 +381,59 @@ function(workbook_book)
     set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
   endforeach()
 
+  # The test suite's book shows the committed reports and figures (what the repository says),
+  # in its own folder: never the numbers of its light smoke runs, never over the run's book.
+  set(test_book "${CMAKE_BINARY_DIR}/test/book")
   add_test(NAME "book: every code snippet in the prose matches its source"
            COMMAND snippets --check "${root}")
   add_test(NAME "book: the code the prose names exists"
            COMMAND snippets --check-names "${root}")
   add_test(NAME "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
            COMMAND book_tool --check-structure "${root}")
-  add_test(NAME "book: every number in the prose names a value the scenes report"
-           COMMAND snippets --check-values "${root}" "${reports}")
+  add_test(NAME "book: every number in the prose is its run's committed value, and the scenes still report it"
+           COMMAND snippets --check-values "${root}" "${runs}" "${CMAKE_BINARY_DIR}/smoke/reports")
   add_test(NAME "book: renders to HTML with MathML, its figures and no broken link"
-           COMMAND book_tool --render "${root}" --values "${reports}" --figures "${figures}"
-                   --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}" --strict
-                   --label "scenes run by the test suite on the ${WORKBOOK_IMPL} implementation")
-  add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken"
-           COMMAND bash "${root}/cmake/book/browser_test.sh" "${CMAKE_BINARY_DIR}/book"
-                   "${CMAKE_BINARY_DIR}/book-test")
+           COMMAND book_tool --render "${root}" --runs "${runs}" --out "${test_book}" --pandoc "${PANDOC_EXECUTABLE}"
+                   --strict --label "the committed reports (figures/)")
+  add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
+           COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser")
+  add_test(NAME "book: the browser checks fail on a book broken on purpose"
+           COMMAND bash "${root}/cmake/book/browser_selftest.sh" "${CMAKE_BINARY_DIR}/test/browser-selftest")
   add_test(NAME "book: the checks fail on a chapter broken on purpose"
            COMMAND ${CMAKE_COMMAND} -DSNIPPETS=$<TARGET_FILE:snippets> -DBOOK=$<TARGET_FILE:book_tool>
-                   -DPANDOC=${PANDOC_EXECUTABLE} -DWORK=${CMAKE_BINARY_DIR}/book-selftest
+                   -DPANDOC=${PANDOC_EXECUTABLE} -DWORK=${CMAKE_BINARY_DIR}/test/book-selftest
                    -P "${root}/cmake/book/selftest.cmake")
+  # The committed figures, and those the scenes as built draw now (in the smoke runs).
+  add_test(NAME "figures: Greek letters in UTF-8, in a font that has them"
+           COMMAND book_tool --check-figures "${root}" "${root}/figures" "${CMAKE_BINARY_DIR}/smoke")
   set_tests_properties(
     "book: every code snippet in the prose matches its source"
     "book: the code the prose names exists"
     "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
-    "book: every number in the prose names a value the scenes report"
+    "book: every number in the prose is its run's committed value, and the scenes still report it"
     "book: renders to HTML with MathML, its figures and no broken link"
-    "book: in a browser every image loads, the math is MathML, no link is broken"
+    "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
+    "book: the browser checks fail on a book broken on purpose"
     "book: the checks fail on a chapter broken on purpose"
+    "figures: Greek letters in UTF-8, in a font that has them"
     PROPERTIES LABELS book TIMEOUT 300)
-  set_tests_properties("book: every number in the prose names a value the scenes report"
+  set_tests_properties("book: every number in the prose is its run's committed value, and the scenes still report it"
+                       "figures: Greek letters in UTF-8, in a font that has them"
                        PROPERTIES FIXTURES_REQUIRED scene_reports)
   set_tests_properties("book: renders to HTML with MathML, its figures and no broken link"
-                       PROPERTIES FIXTURES_REQUIRED scene_reports FIXTURES_SETUP book_html)
-  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken"
+                       PROPERTIES FIXTURES_SETUP book_html)
+  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
                        PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77)
+  set_tests_properties("book: the browser checks fail on a book broken on purpose" PROPERTIES SKIP_RETURN_CODE 77)
+  # Two browsers at once on two cores time out: one browser test at a time.
+  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
+                       "book: the browser checks fail on a book broken on purpose" PROPERTIES RESOURCE_LOCK browser)
 
   add_custom_target(update-snippets
-    COMMAND snippets --update "${root}" "${CMAKE_BINARY_DIR}/report"
-    COMMENT "Refreshing the code and the numbers quoted in the chapters (numbers: from the last cmake/workbook run)")
+    COMMAND snippets --update "${root}" "${runs}"
+    COMMENT "Refreshing the code and the numbers quoted in the chapters (numbers: from the committed reports in figures/)")
   add_custom_target(book
-    COMMAND book_tool --render "${root}" --values "${CMAKE_BINARY_DIR}/report" --figures "${figures}"
+    COMMAND book_tool --render "${root}" --runs "${runs}" --figures "${figures}"
             --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}"
             --label "the last cmake/workbook run on the ${WORKBOOK_IMPL} implementation"
     COMMENT "Rendering the book from the last run's reports into ${CMAKE_BINARY_DIR}/book")

@@ -1,11 +1,18 @@
-# The main job: runs every scene with --json, writes every figure, and the report of each
-# scene's error against its run time (report/report.md, report/scenes.json, report/<scene>.json).
+# The main job: runs every scene of one run with --json, writes every figure, each scene's JSON
+# report next to its figures, and the report of each scene's error against its run time
+# (report.md, scenes.json).
 #   -DSCENES=<file>   one line per scene: chapter|name|exe|arg|arg...
-#   -DFIGURES=<dir>   figures go to <dir>/<chapter>/
-#   -DREPORT=<dir>
+#   -DRUN=<name>      default (cmake/workbook run), or a run of workbook_scene_run()
+#   -DFIGURES=<dir>   figures and reports go to <dir>/<chapter>/ (run default) or
+#                     <dir>/<chapter>/<run>/; each folder is emptied of the files of an earlier run
+#   -DREPORT=<dir>    report.md, scenes.json, and status.txt ("ok", or what failed)
 #   -DIMPL=<which implementation the scenes were built from>
 #   -DBOOK=<exe>|<arg>|...  then render the book with this run's numbers (even when a scene
-#                     failed: its numbers are then marked as not measured)
+#                     failed: its numbers then come from the committed report of the same run)
+#
+# Each report gets "run": {"name": RUN, "args": [...]}: the book reads a report only for a value
+# marker of that very run with those very options.
+cmake_minimum_required(VERSION 3.20)  # script mode: the policies of the project (IN_LIST)
 
 # Three significant digits of a JSON number, for the table.
 function(short_number value out)
@@ -21,14 +28,23 @@ function(short_number value out)
   set(${out} "${v}" PARENT_SCOPE)
 endfunction()
 
+# A JSON string literal.
+function(json_string text out)
+  string(REPLACE "\\" "\\\\" text "${text}")
+  string(REPLACE "\"" "\\\"" text "${text}")
+  set(${out} "\"${text}\"" PARENT_SCOPE)
+endfunction()
+
 file(STRINGS "${SCENES}" lines)
 list(LENGTH lines total)
 file(MAKE_DIRECTORY "${REPORT}")
+file(REMOVE "${REPORT}/status.txt")
 string(TIMESTAMP when "%Y-%m-%d %H:%M UTC" UTC)
-set(md "# Scene report\n\nEvery scene of the workbook, run with its default options on the `${IMPL}` implementation (${when}).\nEach reports its error against an exact or independent reference, and the run time of the computation that produced it.\n\n| Chapter | Scene | Error | Error measure | Run time (s) | Figures |\n|---|---|---|---|---|---|\n")
+set(md "# Scene report (run ${RUN})\n\nEvery scene of the workbook, run with the options of its run `${RUN}` on the `${IMPL}` implementation (${when}).\nEach reports its error against an exact or independent reference, and the run time of the computation that produced it.\n\n| Chapter | Scene | Error | Error measure | Run time (s) | Figures |\n|---|---|---|---|---|---|\n")
 set(all "")
 set(failed "")
 set(i 0)
+set(emptied "")
 foreach(line IN LISTS lines)
   if(line STREQUAL "")
     continue()
@@ -36,9 +52,23 @@ foreach(line IN LISTS lines)
   math(EXPR i "${i} + 1")
   string(REPLACE "|" ";" parts "${line}")
   list(POP_FRONT parts chapter name exe)
+  if(RUN STREQUAL "default")
+    set(out_dir "${FIGURES}/${chapter}")
+  else()
+    set(out_dir "${FIGURES}/${chapter}/${RUN}")
+  endif()
+  # No figure or report of an earlier run survives in a folder this run writes (the folders of
+  # other runs inside it stay).
+  if(NOT out_dir IN_LIST emptied)
+    list(APPEND emptied "${out_dir}")
+    file(GLOB old LIST_DIRECTORIES false "${out_dir}/*" "${out_dir}/.*")
+    if(old)
+      file(REMOVE ${old})
+    endif()
+    file(MAKE_DIRECTORY "${out_dir}")
+  endif()
   message("[${i}/${total}] ${chapter}/${name}")
-  file(REMOVE "${REPORT}/${name}.json")  # no numbers of an earlier run for a scene that fails now
-  execute_process(COMMAND "${exe}" --json --out "${FIGURES}/${chapter}" ${parts}
+  execute_process(COMMAND "${exe}" --json --out "${out_dir}" ${parts}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message("    FAILED (exit status ${rc}): ${err}")
@@ -46,7 +76,17 @@ foreach(line IN LISTS lines)
     string(APPEND md "| ${chapter} | ${name} | failed | exit status ${rc} | | |\n")
     continue()
   endif()
-  file(WRITE "${REPORT}/${name}.json" "${out}")
+  set(args_json "")
+  foreach(a IN LISTS parts)
+    json_string("${a}" q)
+    list(APPEND args_json "${q}")
+  endforeach()
+  list(JOIN args_json ", " args_json)
+  json_string("${RUN}" run_name)
+  string(REGEX REPLACE "^[ \n]*{" "{\n  \"run\": {\"name\": ${run_name}, \"args\": [${args_json}]}," out "${out}")
+  # Figures by name, next to the report: no path of this machine in a report that may be committed.
+  string(REPLACE "\"${out_dir}/" "\"" out "${out}")
+  file(WRITE "${out_dir}/${name}.json" "${out}")
   string(JSON error GET "${out}" error)
   string(JSON measure GET "${out}" error_measure)
   string(JSON run_time GET "${out}" run_time_s)
@@ -75,7 +115,13 @@ endforeach()
 file(WRITE "${REPORT}/scenes.json" "[\n${all}]\n")
 file(WRITE "${REPORT}/report.md" "${md}")
 message("\n${md}")
-message("Figures: ${FIGURES}\nReport:  ${REPORT}/report.md")
+message("Figures and reports: ${FIGURES}\nReport:  ${REPORT}/report.md")
+if(failed)
+  list(JOIN failed "\n" failed_lines)
+  file(WRITE "${REPORT}/status.txt" "failed:\n${failed_lines}\n")
+else()
+  file(WRITE "${REPORT}/status.txt" "ok ${RUN} ${when}\n")
+endif()
 if(BOOK)
   string(REPLACE "|" ";" book "${BOOK}")
   message("\nRendering the book")

@@ -125,14 +125,14 @@ int main(int argc, char** argv) {
                           std::to_string(std::cbrt(eps) / alpha));
 
         kit::Figure fig(scene, "omega_fd_error_vs_step.svg");
-        fig << "set title 'Omega from finite differences of R(t): truncation meets round-off'\n"
+        fig << "set title 'Ω from finite differences of R(t): truncation meets round-off'\n"
                "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set xlabel 'step h'\nset ylabel '|{/Symbol W}_{fd} - {/Symbol a}a| / {/Symbol a}'\n"
+               "set xlabel 'step h'\nset ylabel '|Ω_{fd} − α{/:Bold a}| / α'\n"
                "set key at graph 0.36, 0.97 left top\nset yrange [1e-17:10]\n";
         std::string plot = "plot ";
         for (std::size_t s = 0; s < stencils.size(); ++s)
             plot += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
-        plot += "'-' using 1:2 with lines ls 9 title 'round-off, {/Symbol e} / ({/Symbol a}h)'\n";
+        plot += "'-' using 1:2 with lines ls 9 title 'round-off, ε / (αh)'\n";
         fig << plot;
         for (std::size_t s = 0; s < stencils.size(); ++s) {
             std::vector<std::vector<double>> col;
@@ -143,9 +143,9 @@ int main(int argc, char** argv) {
         fig.finish();
 
         kit::Figure wp(scene, "omega_fd_error_vs_time.svg");
-        wp << "set title 'Best error against run time per recovery of {/Symbol W} (labels: order)'\n"
-              "set logscale y\nset format y '10^{%L}'\nset xlabel 'run time per recovery of {/Symbol W} (ns)'\n"
-              "set ylabel 'best |{/Symbol W}_{fd} - {/Symbol a}a| / {/Symbol a}'\nset key top right\n"
+        wp << "set title 'Best error against run time per recovery of Ω (labels: order)'\n"
+              "set logscale y\nset format y '10^{%L}'\nset xlabel 'run time per recovery of Ω (ns)'\n"
+              "set ylabel 'best |Ω_{fd} − α{/:Bold a}| / α'\nset key top right\n"
               "set offsets graph 0.15, graph 0.15, graph 0.3, graph 0.3\n"
               "plot '-' using 1:2 with linespoints ls 1 title 'central, orders 2-8', "
               "'-' using 1:2 with points ls 2 ps 1.2 title 'forward, order 1', "

@@ -101,11 +101,11 @@ int main(int argc, char** argv) {
         kit::Figure fig(scene, "omega_circle.svg", 760, 700);
         if (fig.enabled()) {
             fig << "set view 62, 38, 0.95, 1.0\nset view equal xyz\nset xyplane 0\nset border 4095\nunset grid\n"
-                   "set xlabel '{/Symbol W}_1'\nset ylabel '{/Symbol W}_2'\nset zlabel '{/Symbol W}_3'\n"
+                   "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
                    "set key at screen 0.01, 0.99 top left\n"
-                   "splot '-' with lines ls 7 lw 2.5 title 'axis a', '-' with lines ls 8 lw 1 title 'body cone (origin to {/Symbol W}(t))', "
+                   "splot '-' with lines ls 7 lw 2.5 title 'axis a', '-' with lines ls 8 lw 1 title 'body cone (origin to Ω(t))', "
                    "'-' with lines ls 1 lw 2 title 'circle predicted from (1.5)-(1.7)', "
-                   "'-' with points ls 2 pt 7 ps 0.5 title '{/Symbol W}(t) from finite differences of R(t)'\n";
+                   "'-' with points ls 2 pt 7 ps 0.5 title 'Ω(t) from finite differences of R(t)'\n";
             const double top = std::max(1.3 * axial, 1.0);
             fig.data({{0, 0, 0}, {top * p.a.x(), top * p.a.y(), top * p.a.z()}});
             std::vector<std::vector<double>> rays, circle, pts;
@@ -127,11 +127,11 @@ int main(int argc, char** argv) {
         }
 
         kit::Figure f2(scene, "omega_squared_vs_angle.svg");
-        f2 << "set title 'Is |{/Symbol W}|^2 = ({/Symbol a}+{/Symbol b})^2? [P, (1.6)] against direct evaluation'\n"
-              "set xlabel 'angle between a and b (degrees)'\nset ylabel '|{/Symbol W}|^2'\nset key bottom left\n"
+        f2 << "set title 'Is |Ω|^2 = (α + β)^2? [P, (1.6)] against direct evaluation'\n"
+              "set xlabel 'angle between a and b (degrees)'\nset ylabel '|Ω|^2'\nset key bottom left\n"
               "set xrange [0:180]\nset xtics 30\n"
-              "plot '-' using 1:2 with lines ls 9 lw 2 title '({/Symbol a}+{/Symbol b})^2, as printed in (1.6)', "
-              "'-' using 1:2 with lines ls 1 title '{/Symbol a}^2+{/Symbol b}^2+2{/Symbol ab}(a,b)', "
+              "plot '-' using 1:2 with lines ls 9 lw 2 title '(α + β)^2, as printed in (1.6)', "
+              "'-' using 1:2 with lines ls 1 title 'α^2 + β^2 + 2αβ({/:Bold a}, {/:Bold b})', "
               "'-' using 1:2 with points ls 2 pt 7 ps 0.6 title 'measured from R(t)'\n";
         std::vector<std::vector<double>> pr, co, me;
         for (const auto& r : sweep) {

@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
             const Vec3 ws = rigid::precession_lab_angular_velocity(p, t_star);
             contact = {{0, 0, 0}, row(ws)};
             char title[160];
-            std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  {/Symbol a} = %.2g;  {/Symbol b} = %.2g",
+            std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  α = %.2g;  β = %.2g",
                           std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta);
             fig << "set title " + kit::quoted(title) + "\n";
             fig << "splot '-' with lines ls 8 lw 0.8, '-' with lines ls 1 lw 2, '-' with lines ls 6 lw 0.8, "

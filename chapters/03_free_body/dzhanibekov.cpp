@@ -121,15 +121,10 @@ int main(int argc, char** argv) {
         scene.report.table("approach", {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
                            table);
 
-        kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
-        fig << "set title 'Spin about the middle axis, perturbed by delta: the body flips (exact motion)'\n"
-               "set xlabel 't'\nset ylabel '{/Symbol W}'\nset key outside right\nset yrange [-12:12]\n"
-               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component x 10', "
-               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
-               "'-' using 1:2 with lines ls 4 title 'largest-axis component x 10', "
-               "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
-               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
+        // The small components are drawn ten times larger, and the vertical range is taken from
+        // everything drawn, so that no curve is cut off.
         std::vector<std::vector<double>> c1, c2, c3, c4, c5;
+        double top = 0;
         for (std::size_t k = 0; k < comps.size(); ++k) {
             const auto& c = comps[k];
             c1.push_back({c[0], 10 * c[1]});
@@ -137,13 +132,23 @@ int main(int argc, char** argv) {
             c3.push_back({c[0], 10 * c[3]});
             c4.push_back({c[0], c[4]});
             if (k % 4 == 0) c5.push_back({c[0], c[5]});
+            top = std::max({top, std::abs(10 * c[1]), std::abs(c[2]), std::abs(10 * c[3]), std::abs(c[4]), std::abs(c[5])});
         }
+        kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
+        fig << "set title 'Spin about the middle axis, perturbed by δ: the body flips (exact motion)'\n"
+               "set xlabel 't'\nset ylabel 'components of Ω'\nset key outside right\n"
+               "set yrange [" + std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) + "]\n"
+               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
+               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
+               "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
+               "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
+               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
         fig.data(c1).data(c2).data(c3).data(c4).data(c5);
         fig.finish();
 
         kit::Figure fe(scene, "dzhanibekov_error.svg", 900, 480);
         fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
-              "set xlabel 't'\nset ylabel '|{/Symbol W} - {/Symbol W}_{exact}| / |{/Symbol W}(0)|'\n"
+              "set xlabel 't'\nset ylabel '|Ω − Ω_{exact}| / |Ω(0)|'\n"
               "set logscale y\nset format y '10^{%L}'\nset key top left\n"
               "plot '-' using 1:2 with lines ls 1 title " + kit::quoted("rk8pd, tol " + short_number(tol)) + ", "
               "'-' using 1:2 with lines ls 2 title " + kit::quoted("student RK4, h = " + short_number(h)) + "\n";

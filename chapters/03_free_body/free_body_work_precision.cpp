@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
         kit::Figure fig(scene, "free_body_work_precision.svg", 820, 520);
         fig << "set title 'Free body, T = " + std::to_string(int(T)) + ": error against run time (min over repetitions)'\n"
                "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set xlabel 'run time (s)'\nset ylabel 'max error: Omega (relative) and R (angle, rad)'\nset key top right\n"
+               "set xlabel 'run time (s)'\nset ylabel 'max error: Ω (relative) and R (angle, rad)'\nset key top right\n"
                "plot '-' with linespoints ls 1 title 'student RK4, h = 0.2 ... 0.001', "
                "'-' with linespoints ls 2 title 'GSL rkf45, tol = 1e-4 ... 1e-13', "
                "'-' with linespoints ls 3 title 'GSL rk8pd, tol = 1e-4 ... 1e-14'\n";
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
               "plot '-' with linespoints ls 1 title 'student RK4', '-' with linespoints ls 2 title 'rkf45', "
               "'-' with linespoints ls 3 title 'rk8pd'\n";
         fd.data(series(0, 6)).data(series(1, 6)).data(series(2, 6));
-        fd << "set title 'orthogonality of R'\nset ylabel '||R^T R - 1||_F'\n"
+        fd << "set title 'orthogonality of R'\nset ylabel '‖R^T R − 1‖_F'\n"
               "plot '-' with linespoints ls 1 title 'student RK4', '-' with linespoints ls 2 title 'rkf45', "
               "'-' with linespoints ls 3 title 'rk8pd'\n";
         fd.data(series(0, 8)).data(series(1, 8)).data(series(2, 8));

@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
             return out;
         };
         fig << "set view 58, 32, 1.0, 1.35\nset view equal xyz\nset xyplane 0\nunset grid\nset border 4095\n"
-               "set xlabel '{/Symbol W}_1'\nset ylabel '{/Symbol W}_2'\nset zlabel '{/Symbol W}_3'\n"
+               "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
                "set key at screen 0.01, 0.99 top left\n"
                "splot '-' with lines ls 8 lw 0.5 title 'energy ellipsoid', "
                "'-' with lines ls 1 lw 2 title 'polhodes about the smallest axis', "

@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
             kit::Figure fig(scene, "accuracy_vs_distance.svg", 820, 520);
             if (fig.enabled()) {
                 fig << "set encoding utf8\nset logscale xy\nset format x '10^{%T}'\nset format y '10^{%T}'\n"
-                       "set xlabel 'distance L / body size sqrt(C_g/μ), on a Grioli line'\nset ylabel 'relative error against binary128'\n"
+                       "set xlabel 'distance L / body size √(C_g/μ), on a Grioli line'\nset ylabel 'relative error against binary128'\n"
                        "set yrange [1e-18:10]\nset key below box opaque maxrows 3 font ',10'\n"
                        "set title 'printed forms (dashed) lose what the rewritten ones (solid) keep'\n"
                        "plot '-' using 1:2 with lines ls 1 dt 2 title 'A, printed (5.3)', "

@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
         if (!fig.enabled()) return;
         const std::string off_text = std::to_string(off).substr(0, 6);
         fig << "set encoding utf8\nset multiplot layout 1,2\nset logscale x\nset format x '10^{%T}'\n"
-               "set xlabel 'distance L / body size sqrt(C_g/μ)'\nset key at graph 0.98, graph 0.55 right bottom box opaque font ',10'\n"
+               "set xlabel 'distance L / body size √(C_g/μ)'\nset key at graph 0.98, graph 0.55 right bottom box opaque font ',10'\n"
                "set title '(a) the two sides of Theorem 1''s condition (lines ± " + off_text + " rad off)'\nset ylabel 'cos^2 φ  and  (B - A)/(C - A)'\n"
                "set yrange [0.5:1.02]\nset xrange [1e-2:1e2]\n"
                "plot '-' using 1:2 with lines ls 3 lw 3 title 'on the line: cos^2 φ', "

@@ -91,8 +91,8 @@ rigid::OdeRhs rhs_of(const HeavyTop& top) {
     return [&top](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); };
 }
 
-Method gsl(const std::string& name, const std::string& label, const std::string& family, const std::string& style) {
-    return {name, label, family, Kind::tolerance, style,
+Method gsl(const std::string& name, const std::string& label, const std::string& family) {
+    return {name, label, family, Kind::tolerance,
             [name](const Scenario& sc, const std::vector<double>& times, double tol, std::vector<BodyState>& out) {
                 const HeavyTop& top = sc.top;
                 std::size_t i = 0;
@@ -108,9 +108,9 @@ Method gsl(const std::string& name, const std::string& label, const std::string&
 }
 
 // A method in increment form, driven by integrate_steps with compensated summation.
-Method stepper(const std::string& name, const std::string& label, const std::string& family, const std::string& style,
-               int evaluations_per_step, std::function<rigid::IncrementStepper(const HeavyTop&)> make) {
-    return {name, label, family, Kind::step, style,
+Method stepper(const std::string& name, const std::string& label, const std::string& family, int evaluations_per_step,
+               std::function<rigid::IncrementStepper(const HeavyTop&)> make) {
+    return {name, label, family, Kind::step,
             [=](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
                 std::size_t i = 0;
                 const long steps = rigid::integrate_steps(make(sc.top), sc.s0, times,
@@ -125,27 +125,27 @@ Method stepper(const std::string& name, const std::string& label, const std::str
 const std::vector<Method>& methods() {
     static const std::vector<Method> list = [] {
         std::vector<Method> m;
-        m.push_back({"rk4", "your RK4 (fixed h)", "explicit Runge-Kutta", Kind::step, "lc rgb '#000000' pt 1",
+        m.push_back({"rk4", "your RK4 (fixed h)", "explicit Runge-Kutta", Kind::step,
                      [](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
                          std::size_t i = 0;
                          return 4 * rigid::integrate_rk4(rhs_of(sc.top), rigid::pack(sc.s0), times,
                                                          [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
                      }});
-        m.push_back(gsl("rkf45", "GSL rkf45", "explicit Runge-Kutta", "lc rgb '#56B4E9' pt 6"));
-        m.push_back(gsl("rk8pd", "GSL rk8pd", "explicit Runge-Kutta", "lc rgb '#0072B2' pt 7"));
-        m.push_back(gsl("msadams", "GSL msadams", "multistep", "lc rgb '#999999' pt 4 dt 2"));
-        m.push_back(gsl("rk4imp", "GSL rk4imp (Gauss)", "implicit", "lc rgb '#CC79A7' pt 8 dt 2"));
-        m.push_back(gsl("bsimp", "GSL bsimp", "implicit", "lc rgb '#882255' pt 10 dt 2"));
-        m.push_back(gsl("msbdf", "GSL msbdf (BDF)", "implicit", "lc rgb '#E69F00' pt 12 dt 2"));
-        m.push_back(stepper("rkmk4", "RKMK4 (fixed h)", "Lie group", "lc rgb '#009E73' pt 9", 4, [](const HeavyTop& top) {
+        m.push_back(gsl("rkf45", "GSL rkf45", "explicit Runge-Kutta"));
+        m.push_back(gsl("rk8pd", "GSL rk8pd", "explicit Runge-Kutta"));
+        m.push_back(gsl("msadams", "GSL msadams", "multistep"));
+        m.push_back(gsl("rk4imp", "GSL rk4imp (Gauss)", "implicit"));
+        m.push_back(gsl("bsimp", "GSL bsimp", "implicit"));
+        m.push_back(gsl("msbdf", "GSL msbdf (BDF)", "implicit"));
+        m.push_back(stepper("rkmk4", "RKMK4 (fixed h)", "Lie group", 4, [](const HeavyTop& top) {
             return rigid::IncrementStepper([&top](const BodyState& s, double h) { return rigid::rkmk4_step(top, s, h); });
         }));
-        m.push_back(stepper("strang", "Strang splitting (fixed h)", "splitting", "lc rgb '#D55E00' pt 5 dt 4", 2,
+        m.push_back(stepper("strang", "Strang splitting (fixed h)", "splitting", 2,
                             [](const HeavyTop& top) {
                                 return rigid::IncrementStepper(
                                     [&top](const BodyState& s, double h) { return rigid::strang_step(top, s, h); });
                             }));
-        m.push_back(stepper("yoshida4", "Strang + triple jump (fixed h)", "splitting", "lc rgb '#D55E00' pt 13", 6,
+        m.push_back(stepper("yoshida4", "Strang + triple jump (fixed h)", "splitting", 6,
                             [](const HeavyTop& top) {
                                 const rigid::IncrementStepper strang = [&top](const BodyState& s, double h) {
                                     return rigid::strang_step(top, s, h);
@@ -153,7 +153,7 @@ const std::vector<Method>& methods() {
                                 return rigid::IncrementStepper(
                                     [strang](const BodyState& s, double h) { return rigid::triple_jump(strang, s, h); });
                             }));
-        m.push_back({"taylor16", "Taylor, degree 16 (fixed h)", "Taylor series", Kind::step, "lc rgb '#44AA99' pt 3",
+        m.push_back({"taylor16", "Taylor, degree 16 (fixed h)", "Taylor series", Kind::step,
                      [](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
                          std::size_t i = 0;
                          return 16 * rigid::integrate_taylor<double>(

@@ -45,10 +45,12 @@ std::vector<Scenario> scenarios();
 // torque). It throws std::runtime_error when the solver gives up.
 enum class Kind { step, tolerance };
 
+// The family decides the panel of the work-precision diagrams (work_precision.cpp): "implicit"
+// methods in one, the other tolerance-driven (adaptive explicit) ones in another, and the
+// fixed-step methods in a third; a new method finds its panel, colour and marker by itself.
 struct Method {
     std::string name, label, family;
     Kind kind;
-    std::string style;  // gnuplot line style of its curve
     std::function<long(const Scenario&, const std::vector<double>& times, double param, std::vector<BodyState>& out)> run;
 };
 // end snippet

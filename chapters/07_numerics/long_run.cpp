@@ -167,9 +167,9 @@ int main(int argc, char** argv) {
                                std::to_string(long(N * h / period)) + " periods)") +
                    "\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'time (periods)'\n"
                    "";
-        const char* panels[4][2] = {{"energy: |H - H(0)| / (T(0) + f)", "energy drift"},
-                                    {"vertical angular momentum (k, R J Omega)", "drift / |J Omega(0)|"},
-                                    {"orthogonality ||R^T R - 1||_F", "defect"},
+        const char* panels[4][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
+                                    {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
+                                    {"orthogonality ‖R^T R − 1‖_F", "defect"},
                                     {"angle between R and the exact R (rad)", "error"}};
         for (int p = 0; p < 4; ++p) {
             fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
             for (const Track& tr : tracks) plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
             if (p == 2) {
                 // Brouwer's law: a random walk of one rounding per step.
-                plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'eps sqrt(steps)', ";
+                plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'ε √(steps)', ";
             }
             plot.resize(plot.size() - 2);
             fig << plot << "\n";

@@ -72,6 +72,34 @@ void write_file(kit::Scene& scene, const std::string& name, const std::string& t
     scene.stage_figure(staged, (dir / name).string());
 }
 
+// The diagrams, by family: one panel each for the adaptive explicit methods, the fixed-step
+// methods and the implicit ones. A method finds its panel from its family and kind, and its
+// colour and marker from its place in the panel, so a new method of bench::methods() slots in
+// without a change here. Colours: Okabe and Ito's palette, safe for colour-blind readers. Each
+// panel has its own set of markers, so that across the whole chapter (the invariants figure
+// shows every method at once) no two methods share both colour and marker.
+struct Panel {
+    std::string title;
+    std::vector<int> markers;  // gnuplot point types, one per method of the panel
+    std::vector<const bench::Method*> methods;
+};
+
+std::vector<Panel> panels(const std::vector<bench::Method>& methods) {
+    std::vector<Panel> p{{"adaptive, explicit (GSL; error-controlled by the tolerance)", {7, 5, 9, 11, 13, 15}, {}},
+                         {"fixed step: your RK4, the geometric methods, the Taylor series", {6, 4, 8, 10, 12, 14}, {}},
+                         {"implicit (GSL, with the analytic Jacobian)", {1, 2, 3}, {}}};
+    for (const bench::Method& m : methods)
+        p[m.family == "implicit" ? 2 : m.kind == bench::Kind::tolerance ? 0 : 1].methods.push_back(&m);
+    return p;
+}
+
+// The line style of the i-th method of a panel.
+std::string style(const Panel& panel, std::size_t i) {
+    static const char* okabe_ito[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
+    const std::size_t n = sizeof okabe_ito / sizeof okabe_ito[0];
+    return std::string("lc rgb '") + okabe_ito[i % n] + "' pt " + std::to_string(panel.markers[i % panel.markers.size()]);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -227,52 +255,98 @@ int main(int argc, char** argv) {
         scene.report.add("repeats", static_cast<long>(b.repeats));
         scene.report.add("wall_time_s", progress.elapsed());
 
-        // The diagrams: one per scenario.
+        // The diagrams: one per scenario, a panel per family of methods (panels() above), all
+        // three on the same axes; rk8pd, the general-purpose favourite, is drawn grey in the
+        // panels it does not belong to, for comparison. Keys stand to the right of their panel.
+        const std::vector<Panel> by_family = panels(methods);
+        const int n_panels = static_cast<int>(by_family.size());
         for (const bench::Scenario& sc : all) {
-            kit::Figure fig(scene, "wp_" + sc.name + ".svg", 860, 560);
+            const int height_px = 280 * n_panels + 90;
+            kit::Figure fig(scene, "wp_" + sc.name + ".svg", 900, height_px);
             if (!fig.enabled()) continue;
-            fig << "set title " + kit::quoted(sc.title + ": error against run time") + "\n"
-                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-                   "set xlabel 'run time (s), minimum over repetitions'\nset ylabel 'error: R (rad) and Omega (relative)'\n"
-                   "set key outside right top font ',10' spacing 1.1\n"
-                   "set yrange [1e-16:10]\n";
-            const double floor = refs[sc.name].double_floor;
-            std::string plot = "plot ";
-            std::vector<std::vector<std::vector<double>>> blocks;
-            for (const bench::Method& m : methods) {
-                std::vector<std::vector<double>> rows;
+            double t_min = 1e300, t_max = 0;
+            for (const bench::Method& m : methods)
                 for (const bench::Point& p : points[sc.name][m.name])
-                    if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
-                if (rows.empty()) continue;
-                plot += "'-' with linespoints " + m.style + " lw 1.6 ps 0.8 title " + kit::quoted(m.label) + ", ";
-                blocks.push_back(rows);
+                    if (!p.failed) t_min = std::min(t_min, p.time_s), t_max = std::max(t_max, p.time_s);
+            if (t_max <= 0) continue;
+            const double top = 1 - 50.0 / height_px, height = top - 55.0 / height_px;
+            fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") + "\n"
+                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+                   "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
+                   "set xrange [" + sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) + "]\n"
+                   "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
+                   "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
+            const double floor = refs[sc.name].double_floor;
+            for (int k = 0; k < n_panels; ++k) {
+                const Panel& panel = by_family[k];
+                const double y1 = top - height * k / n_panels, y0 = top - height * (k + 1) / n_panels;
+                // The panels share the time axis: its numbers only under the last one.
+                fig << "set tmargin at screen " + std::to_string(y1 - 30.0 / height_px) + "\nset bmargin at screen " +
+                           std::to_string(y0 + 8.0 / height_px) + "\nset title " + kit::quoted(panel.title) +
+                           " font ',11' offset 0, -0.4\n" +
+                           (k + 1 == n_panels ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
+                                              : "unset xlabel\nset format x ''\n");
+                std::string plot = "plot ";
+                std::vector<std::vector<std::vector<double>>> blocks;
+                auto curve = [&](const bench::Method& m) {
+                    std::vector<std::vector<double>> rows;
+                    for (const bench::Point& p : points[sc.name][m.name])
+                        if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
+                    return rows;
+                };
+                bool has_rk8pd = false;
+                for (std::size_t i = 0; i < panel.methods.size(); ++i) {
+                    const bench::Method& m = *panel.methods[i];
+                    has_rk8pd = has_rk8pd || m.name == "rk8pd";
+                    auto rows = curve(m);
+                    // A method with no run that finished still has its line in the key.
+                    plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
+                            kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
+                    if (rows.empty()) rows.push_back({1e300, 1e300});
+                    blocks.push_back(rows);
+                }
+                if (!has_rk8pd) {
+                    auto rows = curve(bench::method("rk8pd"));
+                    if (rows.empty()) rows.push_back({1e300, 1e300});
+                    plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
+                    blocks.push_back(rows);
+                }
+                plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
+                        sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
+                fig << plot;
+                for (const auto& rows : blocks) fig.data(rows);
             }
-            plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
-                    sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
-            fig << plot;
-            for (const auto& rows : blocks) fig.data(rows);
+            fig << "unset multiplot\n";
             fig.finish();
         }
         if (points.count("grioli_100")) {
-            kit::Figure fig(scene, "invariants_grioli_100.svg", 1500, 500);
+            // Every method in each panel, in the colour and marker of its work-precision panel; one
+            // key for the three panels, on their right.
+            kit::Figure fig(scene, "invariants_grioli_100.svg", 1400, 560);
             if (fig.enabled()) {
-                fig << "set multiplot layout 1, 3 title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
+                fig << "set multiplot layout 1, 3 margins 0.06, 0.8, 0.11, 0.86 spacing 0.06, 0 "
+                       "title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
                        "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
-                       "set key bottom left font ',8' spacing 0.9\nset yrange [1e-17:1]\n";
+                       "set yrange [1e-17:10]\n";
                 for (int panel = 0; panel < 3; ++panel) {
-                    fig << (panel == 0   ? "set title 'energy: |H - H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
-                            : panel == 1 ? "set title 'vertical angular momentum (k, R J Omega)'\nset ylabel 'drift / |J Omega(0)|'\n"
-                                         : "set title 'orthogonality: ||R^T R - 1||_F'\nset ylabel 'orthogonality defect'\n");
+                    fig << (panel == 2 ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
+                                       : "unset key\n");
+                    fig << (panel == 0   ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
+                            : panel == 1 ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
+                                         : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
                     std::string plot = "plot ";
                     std::vector<std::vector<std::vector<double>>> blocks;
-                    for (const bench::Method& m : methods) {
-                        std::vector<std::vector<double>> rows;
-                        for (const bench::Point& p : points["grioli_100"][m.name])
-                            if (!p.failed) rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
-                        if (rows.empty()) continue;
-                        plot += "'-' with linespoints " + m.style + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
-                        blocks.push_back(rows);
-                    }
+                    for (const Panel& family : by_family)
+                        for (std::size_t i = 0; i < family.methods.size(); ++i) {
+                            const bench::Method& m = *family.methods[i];
+                            std::vector<std::vector<double>> rows;
+                            for (const bench::Point& p : points["grioli_100"][m.name])
+                                if (!p.failed)
+                                    rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
+                            if (rows.empty()) continue;
+                            plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
+                            blocks.push_back(rows);
+                        }
                     plot.resize(plot.size() - 2);
                     fig << plot << "\n";
                     for (const auto& rows : blocks) fig.data(rows);

@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
         if (fig.enabled()) {
             char head[200];
             std::snprintf(head, sizeof head,
-                          "set title '(6.2) with beta = %g, |B| = %g, e/mc = %g: the angle between S and B'\n", field.beta, Bn,
+                          "set title '(6.2) with β = %g, |{/:Bold B}| = %g, e/mc = %g: the angle between {/:Bold S} and {/:Bold B}'\n", field.beta, Bn,
                           field.e_over_mc);
             std::string cmd = std::string(head) +
                               "set xlabel 't'\nset ylabel 'angle (degrees)'\nset yrange [0:180]\nset ytics 30\n"
@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
                        (j == 0 ? "title '(6.2)'" : "notitle");
             for (std::size_t j = 0; j < fan.size(); ++j)
                 cmd += ", '-' with lines ls " + std::to_string(j % 8 + 1) + " dt 2 lw 1 " +
-                       (j == 0 ? "title 'beta = 0'" : "notitle");
+                       (j == 0 ? "title 'β = 0'" : "notitle");
             fig << cmd + "\n";
             for (const auto& c : angle_curves) fig.data(c);
             for (const auto& c : plain_curves) fig.data(c);
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
             for (int k = 0; k <= 120; ++k)
                 circle.push_back(local(rigid::spin_exact(plain, start(60), period * k / 120) / s));
             std::string cmd = "splot '-' with lines lc rgb '#cccccc' lw 0.7 notitle, "
-                              "'-' with lines lc rgb 'black' dt 2 lw 1.5 title 'beta = 0 from 60 degrees'";
+                              "'-' with lines lc rgb 'black' dt 2 lw 1.5 title 'β = 0 from 60°'";
             for (std::size_t j = 0; j < shown.size(); ++j) {
                 char t[64];
                 std::snprintf(t, sizeof t, "(6.2) from %g degrees", shown[j]);

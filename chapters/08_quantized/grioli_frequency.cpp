@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
         if (fl.enabled()) {
             char head[200];
             std::snprintf(head, sizeof head,
-                          "set title 'Omega(0) scaled by λ: distance from R^b(λαt)\u00a0R^a(λαt), "
+                          "set title 'Ω(0) scaled by λ: distance from R^b(λαt)\u00a0R^a(λαt), "
                           "two periods, body (%g, %g, %g)'\n",
                           body.A, body.B, body.C);
             fl << std::string(head) +

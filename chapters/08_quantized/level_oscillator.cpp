@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
         kit::Figure fig(scene, "level_settling.svg", 820, 520);
         if (fig.enabled()) {
             char head[160];
-            std::snprintf(head, sizeof head, "set title 'The oscillator (6.1) with k(E) = %g |sin(pi E/E_{0})|^{%g}: energy against time'\n",
+            std::snprintf(head, sizeof head, "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
                           k.kappa, k.power);
             std::string cmd = std::string(head) + "set xrange [0:" + std::to_string(std::min(T, 40.0)) +
                               "]\nset xlabel 't'\nset ylabel 'E / E_{0}'\nset key outside right top font ',9'\n"

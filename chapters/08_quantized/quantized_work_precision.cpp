@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
                            [s = S0.norm()](std::size_t, const VecX& y) { return std::abs(Vec3(y(0), y(1), y(2)).norm() - s) / s; }};
         };
         std::vector<Problem> problems{
-            spin_problem("plain precession (6.2), beta = 0", plain),
+            spin_problem("plain precession (6.2), β = 0", plain),
             spin_problem("aligning spin (6.2)", aligning),
             Problem{"oscillator (6.1) on a level", rigid::oscillator_equations(osc, k), y_osc,
                     [&](std::size_t i, const VecX& y) {

@@ -75,7 +75,9 @@ Figure::Figure(Scene& scene, const std::string& file_name, int width, int height
     std::signal(SIGPIPE, SIG_IGN);
     fs::remove(staged_path_, ec);
     gp_ = std::make_unique<gnuplotio::Gnuplot>("gnuplot -d 2>'" + log_path_ + "'");
-    *gp_ << terminal << "\n" << "set output " << quoted(staged_path_) << "\n";
+    // Greek and mathematical signs are written as UTF-8 (Ω, α, ‖·‖), never with gnuplot's
+    // escape to the PostScript Symbol font, which a browser shows as Latin letters (W for Ω).
+    *gp_ << terminal << "\n" << "set encoding utf8\n" << "set output " << quoted(staged_path_) << "\n";
     const std::string style = WORKBOOK_STYLE_GP;
     if (!style.empty() && fs::exists(style)) *gp_ << "load " << quoted(style) << "\n";
 }

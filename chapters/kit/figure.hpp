@@ -8,6 +8,9 @@
 // What it guarantees, because gnuplot itself does not (see research/grading-anchors.md, 4):
 //   * gnuplot runs as `gnuplot -d` (no user init files) with an explicit terminal (svg or
 //     pngcairo, from the file name) and an explicit output file;
+//   * text is UTF-8 in DejaVu Sans, a font with the Greek and mathematical signs the figures
+//     use (write 'Ω_{fd}', '‖R^T R − 1‖', never gnuplot's escape to the PostScript Symbol
+//     font, which browsers show as Latin letters; Debian: fonts-dejavu-core);
 //   * the figure is drawn to a temporary name and published by kit::run only when the
 //     whole scene succeeded, so bad input or a failure never leaves a partial figure;
 //   * finish() throws when gnuplot is missing, reports an error, stops reading, or writes

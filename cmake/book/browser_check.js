@@ -4,9 +4,14 @@
 //   * the math is MathML that the browser lays out (MathMLElement, display "math", a size),
 //     and no TeX was left behind as text ($...$, \frac, a .math span without <math>);
 //   * every link leads somewhere: pages of the book with the named anchor, files that load;
-//   * the page has a title, and chapters have their previous/next navigation.
-// Then it checks itself on a page that is broken on purpose: the checks must see the damage.
-// The result goes into <pre id="book-test-result">, one line per finding, ending with DONE.
+//   * the page has a title, and chapters have their previous/next navigation;
+//   * nothing is wider than the content column (<main>'s content box) at a 1200 px wide
+//     window, and nothing hides part of itself: a code block, a table or an equation that does
+//     not fit must wrap, break or shrink, not scroll or be cut off. Each offender is named, with
+//     its page, its tag and its first words.
+// It also reports each page's height (HEIGHT <name> <px>), for the full-page screenshots. Then
+// it checks itself on a page that is broken on purpose: the checks must see the damage. The
+// result goes into <pre id="book-test-result">, one line per finding, ending with DONE.
 /* global BOOK_PAGES, SELFTEST_PAGE */
 "use strict";
 
@@ -45,6 +50,73 @@ function exists(url) {
 
 const TEX_LEFT_BEHIND = /\$[^$\s][^$]*\$|\\(frac|tfrac|mathbf|boldsymbol|alpha|beta|epsilon|delta|hat|sqrt|operatorname|times|cdot)\b/;
 
+// What a reader would call an element: its tag, id or class, and its first words.
+function describe(el) {
+  let what = "<" + el.tagName.toLowerCase();
+  if (el.id) what += " id=" + el.id;
+  else if (el.classList && el.classList.length) what += " class=" + [...el.classList].join(".");
+  what += ">";
+  // By code points: cutting a surrogate pair (math letters such as 𝐚) in two would leave a
+  // string the browser cannot write out.
+  const text = [...(el.textContent || el.getAttribute("src") || el.getAttribute("alt") || "").replace(/\s+/g, " ").trim()];
+  return what + (text.length ? " '" + text.slice(0, 50).join("") + (text.length > 50 ? "…" : "") + "'" : "");
+}
+
+// Elements that stick out of the content column, or hide part of their content (scroll or
+// clip). The outermost offender of a subtree is named; what is inside it is not repeated.
+function overflowProblems(doc) {
+  const problems = [];
+  const win = doc.defaultView;
+  const main = doc.querySelector("main");
+  if (!main) return ["no <main> element"];
+  const cs = win.getComputedStyle(main);
+  const box = main.getBoundingClientRect();
+  const left = box.left + parseFloat(cs.paddingLeft) - 1;
+  const right = box.right - parseFloat(cs.paddingRight) + 1;
+  const reported = [];
+  const inside = (el) => reported.some((r) => r.contains(el));
+  for (const el of main.querySelectorAll("*")) {
+    if (el.closest("math") && el.tagName.toLowerCase() !== "math") continue;  // the <math> itself speaks for its parts
+    if (inside(el)) continue;
+    let r = el.getBoundingClientRect();
+    if (r.width === 0 && r.height === 0) continue;
+    const style = win.getComputedStyle(el);
+    if (style.display === "none" || style.visibility === "hidden") continue;
+    if (el.tagName.toLowerCase() === "math") {
+      // A display equation's box is the column; what it draws may stick out of it.
+      let l = r.left, rt = r.right;
+      for (const part of el.querySelectorAll("*")) {
+        const b = part.getBoundingClientRect();
+        if (b.width > 0) l = Math.min(l, b.left), rt = Math.max(rt, b.right);
+      }
+      r = { left: l, right: rt };
+    }
+    if (r.right > right || r.left < left) {
+      problems.push("wider than the content column (" + Math.round(right - left - 2) + " px): " + describe(el) + " spans " +
+                    Math.round(r.left - left - 1) + " to " + Math.round(r.right - left - 1) + " px");
+      reported.push(el);
+      continue;
+    }
+    // Content wider than its own box: a scroll bar or a cut-off edge. A <math> or <pre> that
+    // does not fit must break or wrap instead; nothing may hide what it holds.
+    const ox = style.overflowX;
+    if (el.clientWidth > 0 && el.scrollWidth > el.clientWidth + 1) {
+      if (ox !== "visible") {
+        problems.push((ox === "hidden" || ox === "clip" ? "cut off" : "scrolls sideways") + " (" + el.scrollWidth +
+                      " px of content in " + el.clientWidth + " px): " + describe(el));
+        reported.push(el);
+      } else if (r.left + el.scrollWidth > right) {  // text or a child that sticks out of its box, and the column
+        problems.push("its content sticks out of the content column (" + el.scrollWidth + " px of content in " +
+                      el.clientWidth + " px): " + describe(el));
+        reported.push(el);
+      }
+    }
+  }
+  if (doc.documentElement.scrollWidth > win.innerWidth + 1)
+    problems.push("the page is wider than the window (" + doc.documentElement.scrollWidth + " px in " + win.innerWidth + " px)");
+  return problems;
+}
+
 function checkPage(name, doc, kind) {
   const problems = [];
   const win = doc.defaultView;
@@ -65,14 +137,14 @@ function checkPage(name, doc, kind) {
   if (laidOut < maths.length)
     problems.push((maths.length - laidOut) + " of " + maths.length + " <math> elements not laid out as MathML");
   for (const span of doc.querySelectorAll("span.math"))
-    if (!span.querySelector("math")) problems.push("math left as TeX: " + span.textContent.slice(0, 60));
+    if (!span.querySelector("math")) problems.push("math left as TeX: " + [...span.textContent].slice(0, 60).join(""));
   const walker = doc.createTreeWalker(doc.body, NodeFilter.SHOW_TEXT, {
     acceptNode: (n) =>
       n.parentElement.closest("code, pre, math, script, style") ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT,
   });
   for (let n = walker.nextNode(); n; n = walker.nextNode()) {
     const m = n.textContent.match(TEX_LEFT_BEHIND);
-    if (m) problems.push("TeX left as text: '" + m[0].slice(0, 40) + "' in '" + n.textContent.trim().slice(0, 60) + "'");
+    if (m) problems.push("TeX left as text: '" + [...m[0]].slice(0, 40).join("") + "' in '" + [...n.textContent.trim()].slice(0, 60).join("") + "'");
   }
 
   if (kind === "chapter") {
@@ -92,7 +164,9 @@ function checkPage(name, doc, kind) {
     url.hash = "";
     links.push({ href, url: url.href, fragment });
   }
-  return { problems, links, ids: new Set([...doc.querySelectorAll("[id]")].map((e) => e.id)), maths: maths.length, images: images.length };
+  problems.push(...overflowProblems(doc));
+  const height = Math.ceil(Math.max(doc.documentElement.scrollHeight, doc.body ? doc.body.scrollHeight : 0));
+  return { problems, links, ids: new Set([...doc.querySelectorAll("[id]")].map((e) => e.id)), maths: maths.length, images: images.length, height };
 }
 
 async function checkAll(pages) {
@@ -129,6 +203,7 @@ async function checkAll(pages) {
     for (const r of results.values()) {
       const ext = r.links.filter((l) => l.external).length;
       say("PAGE " + r.page.name + ": " + r.images + " images, " + r.maths + " math, " + r.links.length + " links (" + ext + " external)");
+      if (r.height) say("HEIGHT " + r.page.name + " " + r.height);
       for (const p of r.problems) {
         say("FAIL " + r.page.name + ": " + p);
         failures++;
@@ -141,6 +216,12 @@ async function checkAll(pages) {
       ["a broken link", /broken link: missing-page\.html/],
       ["a missing anchor", /no such anchor/],
       ["TeX left as text", /TeX left as text/],
+      ["a code block wider than the column", /wider than the content column .*<pre[^>]*> 'a line of code/],
+      ["a code block that scrolls", /scrolls sideways .*<pre[^>]*> 'a scrolling line/],
+      ["a table wider than the column", /wider than the content column .*<table>/],
+      ["an equation wider than the column", /(wider than the content column|scrolls sideways) .*<math/],
+      ["an image cut off", /cut off .*<div class=clip>/],
+      ["a word too long for the column", /sticks out of the content column .*<h1>/],
     ]) {
       if (!pattern.test(self)) {
         say("FAIL self-test: the checks did not notice " + what + " on the broken page");

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The book in a real browser: headless Chromium opens every page of the rendered book and
-# checks that every image loaded, the math is laid out as MathML and no link is broken
-# (cmake/book/browser_check.js); then it takes a screenshot of each chapter and of the other
-# pages of prose into <book>/screenshots/ (a build artefact: look at them).
+# checks that every image loaded, the math is laid out as MathML, no link is broken, and
+# nothing is wider than the content column or hides part of itself (cmake/book/browser_check.js);
+# then it takes a full-page screenshot (the whole height of the page, 1200 px wide) of each
+# chapter and of the other pages of prose into <book>/screenshots/ (a build artefact: look at
+# them), and checks that each is as tall as its page.
 #
 #   cmake/book/browser_test.sh <book folder> <scratch folder>
 #
@@ -51,12 +53,20 @@ chrome() {
   echo '</script><script src="browser_check.js"></script></body></html>'
 } >"$work/harness.html"
 cp "$here/browser_check.js" "$work/browser_check.js"
+cp "$here/book.css" "$work/book.css"
 cat >"$work/broken-on-purpose.html" <<'EOF'
-<!DOCTYPE html><html><head><meta charset="utf-8"><title>Broken on purpose</title></head><body>
+<!DOCTYPE html><html><head><meta charset="utf-8"><title>Broken on purpose</title>
+<link rel="stylesheet" href="book.css"></head><body><main>
 <p>A figure that is not there: <img src="missing-figure.svg" alt="missing"></p>
 <p><a href="missing-page.html">A page that is not there</a>; <a href="#no-such-anchor">an anchor that is not there</a>.</p>
 <p>Math that was left as TeX: $\frac{a}{b}$.</p>
-</body></html>
+<pre style="white-space: pre; width: 1500px">a line of code far too long for the column, and a box made as wide as it</pre>
+<pre style="white-space: pre; overflow-x: auto">a scrolling line of code: xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx</pre>
+<table style="width: 1400px"><tr><td>a table wider than the column</td></tr></table>
+<math display="block"><mrow><mi>x</mi><mo>=</mo><mn>111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111</mn></mrow></math>
+<h1 style="overflow-wrap: normal">Averyveryveryveryveryveryveryveryveryveryveryveryveryveryveryverylongwordthatcannotbreakanywhereatallinthiscolumn</h1>
+<div class="clip" style="overflow: hidden; width: 300px"><img alt="" style="max-width: none; width: 900px; height: 20px" src="data:image/svg+xml;utf8,<svg xmlns='http://www.w3.org/2000/svg' width='900' height='20'/>"></div>
+</main></body></html>
 EOF
 
 echo "Checking $(wc -l <"$book/pages.txt") pages with $("$browser" --version 2>/dev/null | head -1)"
@@ -73,26 +83,38 @@ elif grep -q '^FAIL' <<<"$result" || ! grep -q '^PASSED$' <<<"$result"; then
   status=1
 fi
 
-# Screenshots of every page of prose (not the source listings), two browsers at a time.
+# Full-page screenshots of every page of prose (not the source listings), two browsers at a
+# time: the window is as tall as the page, as the checks measured it.
 shots=$book/screenshots
 rm -rf "$shots"
 mkdir -p "$shots"
+declare -A height
+while read -r _ name px; do height[$name]=$px; done < <(grep '^HEIGHT ' <<<"$result")
 pids=()
 while IFS=$'\t' read -r file kind _title; do
   [[ -z $file || $kind == code ]] && continue
-  chrome --screenshot="$shots/${file%.html}.png" --window-size=1200,2000 "file://$book/$file" >/dev/null &
+  h=${height[$file]:-2000}
+  chrome --screenshot="$shots/${file%.html}.png" --window-size=1200,"$h" "file://$book/$file" >/dev/null &
   pids+=($!)
   if (( ${#pids[@]} >= 2 )); then wait "${pids[0]}" || true; pids=("${pids[@]:1}"); fi
 done <"$book/pages.txt"
 for pid in "${pids[@]}"; do wait "$pid" || true; done
+# The height of a PNG: bytes 20-23 of its header, big-endian.
+png_height() { od -An -t u1 -j 20 -N 4 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }'; }
 while IFS=$'\t' read -r file kind _title; do
   [[ -z $file || $kind == code ]] && continue
   png="$shots/${file%.html}.png"
-  if [[ -s $png ]]; then
-    echo "screenshot: $png"
-  else
+  if [[ ! -s $png ]]; then
     echo "FAIL no screenshot of $file"
     status=1
+  elif [[ -z ${height[$file]:-} ]]; then
+    echo "FAIL $file: the checks did not measure its height, so its screenshot may not show the whole page"
+    status=1
+  elif (( $(png_height "$png") < ${height[$file]} )); then
+    echo "FAIL $file: the screenshot is $(png_height "$png") px tall, the page ${height[$file]} px"
+    status=1
+  else
+    echo "screenshot: $png ($(png_height "$png") px, the whole page)"
   fi
 done <"$book/pages.txt"
 exit $status

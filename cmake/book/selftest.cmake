@@ -27,11 +27,31 @@ file(WRITE "${tree}/chapters/errata.md" [=[
 | 1 | (1.3) | a | b |
 ]=])
 file(WRITE "${tree}/tests/mini_test.cpp" "TEST_CASE(\"mini: doubles\") {}\n")
-file(WRITE "${tree}/chapters/01_mini/mini_scene.cpp" "opts.real(\"alpha\", 1.0, \"a frequency\");\n")
-file(WRITE "${tree}/reports/mini_scene.json" [=[
-{"scene": "mini_scene", "error": 1.5e-3, "run_time_s": 2e-6,
+file(WRITE "${tree}/chapters/01_mini/mini_scene.cpp"
+     "opts.real(\"alpha\", 1.0, \"a frequency\");\nfig << \"set xlabel '{/Symbol W}_1'\";\n"
+     "fig << \"set ylabel '{/Symbol a}'\";\n")
+# The runs CMake declares, the committed reports of two of them, and the test suite's report.
+file(WRITE "${tree}/runs.txt" "mini_scene|01_mini|default\nmini_scene|01_mini|long|--long|yes\n")
+file(WRITE "${tree}/figures/01_mini/mini_scene.json" [=[
+{"run": {"name": "default", "args": []}, "scene": "mini_scene", "error": 1.5e-3, "run_time_s": 2e-6,
+ "not_measured": -1, "not_finite": null, "fastest": "none", "gone": 3,
  "by_case": {"columns": ["order", "error"], "rows": [[1, 0.5], [2, 0.25]]}}
 ]=])
+file(WRITE "${tree}/figures/01_mini/long/mini_scene.json" [=[
+{"run": {"name": "long", "args": ["--long", "no"]}, "scene": "mini_scene", "error": 1e-9, "run_time_s": 2}
+]=])
+file(WRITE "${tree}/smoke/mini_scene.json" [=[
+{"scene": "mini_scene", "error": 1e-2, "run_time_s": 1e-6, "not_measured": -1, "not_finite": null, "fastest": "rk4",
+ "by_case": {"columns": ["order", "error"], "rows": [[1, 0.5], [2, 0.25]]}}
+]=])
+# A figure that writes a Greek letter with gnuplot's Symbol-font escape, and one in a font that
+# has no such letter (or is not installed at all).
+file(WRITE "${tree}/figures/01_mini/escape.svg"
+     "<svg><g font-family=\"DejaVu Sans\"><text><tspan>{/Symbol W}_1</tspan></text></g></svg>\n")
+file(WRITE "${tree}/figures/01_mini/symbol.svg"
+     "<svg><g font-family=\"DejaVu Sans\"><text><tspan font-family=\"Symbol\">W</tspan>_1</text></g></svg>\n")
+file(WRITE "${tree}/figures/01_mini/font.svg"
+     "<svg><g font-family=\"No Such Font At All\"><text><tspan>Ω(t)</tspan></text></g></svg>\n")
 file(WRITE "${tree}/chapters/01_mini/README.md" [=[
 # Chapter 1. Mini
 
@@ -58,10 +78,18 @@ build/solutions/scenes/mini_scene --alpha 1 --beta 2
 build/solutions/scenes/lost_scene
 ```
 
-The error is <!-- value: mini_scene.no_such_key fmt=%.2g -->1e-3<!-- end value -->, the table
-gives <!-- value: mini_scene.by_case[order=3].error -->0.1<!-- end value -->, and a bad format
-<!-- value: mini_scene.error fmt=%q -->x<!-- end value -->; a good one
-<!-- value: mini_scene.by_case[order=2].error fmt=%.2f -->0.25<!-- end value -->.
+The error is <!-- value: mini_scene.no_such_key run=default fmt=%.2g -->1e-3<!-- end value -->, the table
+gives <!-- value: mini_scene.by_case[order=3].error run=default -->0.1<!-- end value -->, and a bad format
+<!-- value: mini_scene.error run=default fmt=%q -->x<!-- end value -->; a good one
+<!-- value: mini_scene.by_case[order=2].error run=default fmt=%.2f -->0.25<!-- end value -->.
+A value of no run <!-- value: mini_scene.error fmt=%.1g -->0.002<!-- end value -->, of a run never declared
+<!-- value: mini_scene.error run=quick -->0.002<!-- end value -->, of a run whose report was made with other
+options <!-- value: mini_scene.error run=long fmt=%.0e -->1e-09<!-- end value -->, not measured
+<!-- value: mini_scene.not_measured run=default -->-1<!-- end value -->, not finite
+<!-- value: mini_scene.not_finite run=default -->nan<!-- end value -->, a word that says it is missing
+<!-- value: mini_scene.fastest run=default -->none<!-- end value -->, stale text
+<!-- value: mini_scene.error run=default fmt=%.2g -->0.002<!-- end value -->, and a key the scene no longer reports
+<!-- value: mini_scene.gone run=default fmt=%d -->3<!-- end value -->.
 
 Math that pandoc cannot read: $\unknowncmd{x}$.
 
@@ -98,6 +126,7 @@ endfunction()
 check("snippets --check"
   EXPECT "snippet 'quoted' differs" "no source defines snippet 'vanished'"
          "snippet 'never_quoted' is not quoted anywhere" "value 'mini_scene.error': fmt=%q"
+         "value 'mini_scene.error': states no run"
   COMMAND "${SNIPPETS}" --check "${tree}")
 check("snippets --check-names"
   EXPECT "`renamed_function` does not occur" "`exercises/rigid/gone.hpp` does not exist"
@@ -105,8 +134,12 @@ check("snippets --check-names"
          "runs the scene 'lost_scene'"
   COMMAND "${SNIPPETS}" --check-names "${tree}")
 check("snippets --check-values"
-  EXPECT "has no key 'no_such_key'" "has no row with order = 3"
-  COMMAND "${SNIPPETS}" --check-values "${tree}" "${tree}/reports")
+  EXPECT "has no key 'no_such_key'" "has no row with order = 3" "has no run 'quick' \\(declared: default, long\\)"
+         "comes from the run 'long' with --long no, but the run 'long' of mini_scene is declared with --long yes"
+         "'mini_scene.not_measured' is -1 in the run 'default'" "'mini_scene.not_finite' is null"
+         "'mini_scene.fastest' is \"none\"" "the text says '0.002', its committed report [^ ]+ says '0.0015'"
+         "value 'mini_scene.gone': the scene as built no longer reports it"
+  COMMAND "${SNIPPETS}" --check-values "${tree}" "${tree}/runs.txt" "${tree}/smoke")
 check("book --check-structure"
   EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section"
          "do not say where to work" "do not show how to check the work" "its last section is '## 2.1"
@@ -115,13 +148,20 @@ check("book --check-structure"
 check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
-  COMMAND "${BOOK}" --render "${tree}" --values "${tree}/reports" --figures "${tree}/figures"
-          --out "${WORK}/book" --pandoc "${PANDOC}" --strict)
+         "'mini_scene.not_measured' is -1 in the run 'default'" "has no run 'quick'"
+         "comes from the run 'long' with --long no"
+  COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict)
+check("book --check-figures"
+  EXPECT "chapters/01_mini/mini_scene.cpp:2: gnuplot's [{]/Symbol [.][.][.][}] escape"
+         "chapters/01_mini/mini_scene.cpp:3: gnuplot's" "escape.svg: its text has gnuplot's"
+         "font.svg: its text uses U.3a9 and is in the font 'No Such Font At All', which is not installed"
+         "symbol.svg: text in the font 'Symbol'"
+  COMMAND "${BOOK}" --check-figures "${tree}" "${tree}/figures")
 
 # And the one good value of the broken chapter is rendered as the report has it.
 if(EXISTS "${WORK}/book/01_mini.html")
   file(READ "${WORK}/book/01_mini.html" html)
-  if(NOT html MATCHES "measured by this build\">0\\.25</span>")
+  if(NOT html MATCHES "from the committed report\">0\\.25</span>")
     set(failures "${failures}\nbook --render: the value by_case[order=2].error was not shown as 0.25")
   endif()
 else()

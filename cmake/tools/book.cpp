@@ -1,19 +1,26 @@
 // Renders the book: the chapters' README.md files, the contents, the errata and the hints, as
 // HTML pages that work offline (pandoc, math as MathML, no script).
 //
-//   book --render <root> --values <dir> --figures <dir> --out <dir> [--pandoc <exe>]
+//   book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>]
 //        [--label <text>] [--strict]
 //   book --check-structure <root>
+//   book --check-figures <root> <folder>...
 //
 // --render: chapters/README.md is the table of contents; each row that links
 // (NN_slug/README.md) is a chapter, in that order. Pages: index.html (the contents),
 // NN_slug.html per chapter, errata.html, hints.html, workbook.html (the top README), any
 // other .md the pages link to, and code/<path>.html for each source file they link to.
-// Value markers show the values of the reports in --values (<scene>.json); without a report
-// of the scene the committed text stays, marked as not measured (--strict: an error). Figures
-// come from --figures (the folder the main job wrote them to), else from <root>/figures, and
-// are copied next to the pages. Every link is mapped to its page, and must exist, fragment
+// A value marker shows the value of its run (run=..., declared in <runs.txt>) from the report
+// that run wrote into --figures (the folder of a `cmake/workbook run`, see prose.hpp), else
+// from the committed report in <root>/figures (the same run's options, refreshed by the target
+// update-figures; shown so, in its own style); never from a run with other options. Without
+// either, the committed text stays, marked as not measured (--strict: an error). A value the
+// run marks as not measured (null, -1, "not measured") is an error naming the key. Figures
+// come from --figures, else from <root>/figures, and are copied next to the pages. Every link is mapped to its page, and must exist, fragment
 // and all. Writes <out>/pages.txt for the browser test: file, kind, title per line.
+//
+// --check-figures: no source writes gnuplot's Symbol-font escape for a Greek letter, and every
+// SVG under the folders names a font that has every character of its text (fontconfig).
 //
 // --check-structure: every chapter opens with "**Before you start.**" (what the reader
 // should know first), has an "## Errata" section and ends with an "## Exercises" section
@@ -23,6 +30,7 @@
 #include <cstdio>
 #include <ctime>
 #include <deque>
+#include <optional>
 #include <iostream>
 #include <set>
 #include <string>
@@ -204,6 +212,113 @@ int check_structure(const fs::path& root) {
     return problems.empty() ? 0 : 1;
 }
 
+// ------------------------------------------------------------------------------ figures
+
+// The code points above ASCII in a UTF-8 text.
+std::set<unsigned> non_ascii(const std::string& text) {
+    std::set<unsigned> out;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80) {
+            ++i;
+            continue;
+        }
+        const int n = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : 1;
+        unsigned cp = c & (n == 3 ? 0x07 : n == 2 ? 0x0F : 0x1F);
+        for (int k = 1; k <= n && i + k < text.size(); ++k) cp = (cp << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+        out.insert(cp);
+        i += static_cast<std::size_t>(n) + 1;
+    }
+    return out;
+}
+
+// Greek and mathematical signs in the figures: the sources must write them as UTF-8, never with
+// gnuplot's PostScript Symbol-font escape (a browser shows that as Latin letters: "W" for Ω),
+// and every SVG must name, as the first of its font families, a font installed here that has
+// every character its text uses (asked of fontconfig: fc-list). The checking tools themselves
+// (cmake/tools/, cmake/book/) name the escape, and are not scanned.
+int check_figures(const fs::path& root, const std::vector<fs::path>& trees) {
+    std::vector<std::string> problems;
+    const std::string escape = std::string("{/Sym") + "bol";
+    int sources = 0, svgs = 0;
+    for (const char* dir : {"chapters", "exercises", "tests", "figures", "cmake"}) {
+        if (!fs::exists(root / dir)) continue;
+        for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
+            if (!e.is_regular_file()) continue;
+            const std::string r = rel(e.path(), root), ext = e.path().extension().string();
+            if (r.rfind("cmake/tools/", 0) == 0 || r.rfind("cmake/book/", 0) == 0) continue;
+            if (ext != ".cpp" && ext != ".hpp" && ext != ".gp" && ext != ".cmake" && ext != ".txt") continue;
+            ++sources;
+            const auto lines = prose::read_lines(e.path());
+            for (std::size_t i = 0; i < lines.size(); ++i)
+                if (lines[i].find(escape) != std::string::npos)
+                    problems.push_back(r + ":" + std::to_string(i + 1) + ": gnuplot's " + escape +
+                                       " ...} escape: write the letter in UTF-8 (Ω, α, ε), which every figure's font has");
+        }
+    }
+    const std::regex family_attr(R"#(font-family\s*=\s*["']([^"']*)["'])#");
+    const std::regex text_element(R"(<text\b[^>]*>([\s\S]*?)</text>)");
+    const std::regex tag(R"(<[^>]*>)");
+    std::map<std::string, bool> covered;  // "family|charset" -> fc-list says yes
+    std::optional<bool> have_fc;
+    for (const auto& tree : trees) {
+        if (!fs::exists(tree)) continue;
+        for (const auto& e : fs::recursive_directory_iterator(tree)) {
+            if (!e.is_regular_file() || e.path().extension() != ".svg") continue;
+            ++svgs;
+            const std::string svg = prose::read_text(e.path()), name = e.path().string();
+            std::string text;
+            for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text_element); it != std::sregex_iterator(); ++it)
+                text += std::regex_replace((*it)[1].str(), tag, "") + "\n";
+            if (text.find(escape) != std::string::npos)
+                problems.push_back(name + ": its text has gnuplot's " + escape + " ...} escape");
+            const std::set<unsigned> chars = non_ascii(text);
+            std::string charset;
+            for (unsigned c : chars) {
+                char hex[16];
+                std::snprintf(hex, sizeof hex, "%x", c);
+                charset += (charset.empty() ? "" : " ") + std::string(hex);
+            }
+            std::set<std::string> families;
+            for (auto it = std::sregex_iterator(svg.begin(), svg.end(), family_attr); it != std::sregex_iterator(); ++it) {
+                std::string f = (*it)[1].str();
+                f = f.substr(0, f.find(','));
+                f.erase(0, f.find_first_not_of(" '\""));
+                f.erase(f.find_last_not_of(" '\"") + 1);
+                families.insert(f);
+            }
+            if (families.empty()) families.insert("(none named)");
+            for (const auto& f : families) {
+                if (f == "Symbol") {  // where gnuplot's escape puts its letters: browsers show them as Latin ones
+                    problems.push_back(name + ": text in the font 'Symbol', as gnuplot's " + escape +
+                                       " ...} escape writes it (a browser shows Latin letters: W for Ω)");
+                    continue;
+                }
+                const std::string key = f + "|" + charset;
+                if (!covered.count(key)) {
+                    if (!have_fc) have_fc = run("fc-list --version").status == 0;
+                    if (!*have_fc) {
+                        problems.push_back("fc-list is not installed (Debian: fontconfig): cannot check the fonts of the figures");
+                        return 1;
+                    }
+                    const Output o = run("fc-list " + shell_quote(":family=" + f + (charset.empty() ? "" : ":charset=" + charset)) +
+                                         " family");
+                    covered[key] = o.status == 0 && o.text.find_first_not_of(" \n") != std::string::npos;
+                }
+                if (!covered[key])
+                    problems.push_back(name + ": its text" + (charset.empty() ? "" : " uses U+" + charset + " and") +
+                                       " is in the font '" + f + "', which is not installed here" +
+                                       (charset.empty() ? "" : " with those characters") +
+                                       " (the figures use DejaVu Sans: Debian fonts-dejavu-core)");
+            }
+        }
+    }
+    std::cout << sources << " sources checked for the Symbol-font escape; " << svgs
+              << " SVG figures checked for fonts that have their characters\n";
+    for (const auto& p : problems) std::cout << "  " << p << "\n";
+    return problems.empty() ? 0 : 1;
+}
+
 // ------------------------------------------------------------------------------ rendering
 
 struct Page {
@@ -216,10 +331,13 @@ struct Page {
 
 class Book {
 public:
-    Book(fs::path root, fs::path values, fs::path figures, fs::path out, std::string pandoc, std::string label, bool strict)
+    Book(fs::path root, const fs::path& runs, fs::path figures, fs::path out, std::string pandoc, std::string label,
+         bool strict)
         : root_(std::move(root)),
-          values_(std::move(values)),
+          runs_(runs),
           figures_(std::move(figures)),
+          this_run_(figures_),
+          committed_(root_ / "figures"),
           out_(std::move(out)),
           pandoc_(std::move(pandoc)),
           label_(std::move(label)),
@@ -237,8 +355,10 @@ private:
     std::string pandoc_command(const Page& page, const fs::path& in, const fs::path& out, const std::string& from);
 
     fs::path root_;
-    prose::Values values_;
-    fs::path figures_, out_;
+    prose::Runs runs_;
+    fs::path figures_;
+    prose::Reports this_run_, committed_;
+    fs::path out_;
     std::string pandoc_, label_, book_title_;
     bool strict_;
     std::vector<Page> pages_;
@@ -247,8 +367,11 @@ private:
     std::vector<std::string> problems_, notes_;
     std::vector<std::tuple<std::string, std::string, std::string, std::string>> fragments_;  // page, link, target, id
     std::vector<std::string> index_lines(const std::vector<std::string>& contents);
-    int values_shown_ = 0, values_unmeasured_ = 0, figures_copied_ = 0, page_values_ = 0, page_unmeasured_ = 0;
-    std::map<std::string, int> unmeasured_by_scene_;  // scenes without a report: values shown as committed
+    bool own_run() const { return fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures"); }
+    int values_shown_ = 0, values_committed_ = 0, values_unmeasured_ = 0, figures_copied_ = 0;
+    int page_values_ = 0, page_committed_ = 0, page_unmeasured_ = 0;
+    std::map<std::string, int> unmeasured_by_scene_;  // runs without a report: values shown as committed
+    std::map<std::string, int> committed_by_scene_;   // runs this build did not make: committed reports
 };
 
 // Path of `from` relative to the folder of the book page `page` ("" or "../").
@@ -333,7 +456,7 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
 // figures with numbered captions.
 std::string Book::preprocess(const Page& page) {
     auto lines = prose::read_lines(page.source);
-    page_values_ = page_unmeasured_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
     const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
     std::string md;
@@ -368,9 +491,8 @@ std::string Book::preprocess(const Page& page) {
             // A figure this build should have drawn but did not: the committed one is shown, and said so.
             const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
             std::string whose;
-            if (key.rfind("figures/", 0) == 0 && fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures") &&
-                !fs::exists(figures_ / key.substr(8)))
-                whose = " <em>(Drawn by the reference solution: this build has not drawn it.)</em>";
+            if (key.rfind("figures/", 0) == 0 && own_run() && !fs::exists(figures_ / key.substr(8)))
+                whose = " <em>(The committed figure: this build has not drawn it.)</em>";
             md += "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
                   html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
                   whose + "</figcaption>\n</figure>\n";
@@ -383,19 +505,45 @@ std::string Book::preprocess(const Page& page) {
                 problems_.push_back(where + ": value '" + v->path + "': " + v->error);
                 continue;
             }
+            const std::string scene = v->scene(), run_key = scene + " (run " + v->run + ")";
             try {
-                const auto text = prose::resolve(*v, values_);
+                const prose::RunDecl* d = runs_.find(scene, v->run);
+                if (!d)
+                    throw std::runtime_error("the scene " + scene + " has no run '" + v->run + "' (declared: " +
+                                             runs_.names(scene) + ")");
+                // This build's own report of the run; a report made with other options is never read.
+                const prose::Json* report = nullptr;
+                if (own_run()) {
+                    try {
+                        report = this_run_.report(*d);
+                    } catch (const std::exception& e) {
+                        notes_.push_back(e.what());
+                    }
+                }
                 ++page_values_;
-                if (text) {
+                if (report) {
                     ++values_shown_;
-                    shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", measured by this build\">" +
-                            html_escape(*text) + "</span>";
+                    shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", run " + v->run +
+                            ", measured by this build\">" + html_escape(prose::resolve(*v, *report)) + "</span>";
+                } else if (const prose::Json* c = committed_.report(*d)) {
+                    const std::string text = prose::resolve(*v, *c);
+                    if (own_run()) {
+                        ++values_committed_, ++page_committed_;
+                        ++committed_by_scene_[run_key];
+                        shown = "<span class=\"value committed\" title=\"" + html_escape(v->path) + ", run " + v->run +
+                                ": not run by this build; from the committed report of the same run\">" +
+                                html_escape(text) + "</span>";
+                    } else {
+                        ++values_shown_;
+                        shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", run " + v->run +
+                                ", from the committed report\">" + html_escape(text) + "</span>";
+                    }
                 } else {
                     ++values_unmeasured_;
                     ++page_unmeasured_;
-                    ++unmeasured_by_scene_[v->path.substr(0, v->path.find_first_of(".["))];
-                    shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v->path) +
-                            ": not measured by this build; the value committed with the text\">" + v->text + "</span>";
+                    ++unmeasured_by_scene_[run_key];
+                    shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v->path) + ", run " + v->run +
+                            ": no report of this run; the text committed with the prose\">" + v->text + "</span>";
                 }
             } catch (const std::exception& e) {
                 problems_.push_back(where + ": value '" + v->path + "': " + e.what());
@@ -490,8 +638,10 @@ std::string Book::pandoc_command(const Page& page, const fs::path& in, const fs:
                       " --metadata=pagetitle:" + shell_quote(page.title + " | " + book_title_) +
                       " --variable=root:" + shell_quote(up) + " --variable=book-title:" + shell_quote(html_escape(book_title_)) +
                       " --variable=page-kind:" + page.kind +
+                      " --variable=page-id:" + shell_quote(fs::path(page.file).stem().string()) +
                       " --variable=source:" + shell_quote(html_escape(rel(page.source, root_))) +
                       (page_values_ ? " --variable=label:" + shell_quote(html_escape(label_)) : std::string()) +
+                      (page_committed_ ? " --variable=committed:yes" : std::string()) +
                       (page_unmeasured_ ? " --variable=unmeasured:yes" : std::string());
     if (page.kind == "chapter") cmd += " --toc --toc-depth=3";
     return cmd + " --output=" + shell_quote(out.string()) + " " + shell_quote(in.string());
@@ -521,7 +671,7 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
 }
 
 void Book::render_code(const Page& page) {
-    page_values_ = page_unmeasured_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = 0;
     const std::string text = prose::read_text(page.source);
     std::size_t longest = 2, run_len = 0;
     for (char c : text) {
@@ -617,19 +767,22 @@ int Book::render() {
         if (!ids[file].count(id)) problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
     }
 
-    for (const auto& [scene, count] : unmeasured_by_scene_)
+    for (const auto& [what, count] : unmeasured_by_scene_)
         (strict_ ? problems_ : notes_)
-            .push_back("this build has no report " + (values_.dir() / (scene + ".json")).string() + ": " +
-                       std::to_string(count) + " value(s) of the scene " + scene +
-                       " show the text committed with the prose, marked as not measured");
+            .push_back("no report of " + what + " in " + figures_.string() + " or the committed figures: " +
+                       std::to_string(count) + " value(s) show the text committed with the prose, marked as not measured");
+    for (const auto& [what, count] : committed_by_scene_)
+        notes_.push_back("this build did not run " + what + ": " + std::to_string(count) +
+                         " value(s) from its committed report (same options), marked so");
     std::string list;
     for (const auto& p : pages_) list += p.file + "\t" + p.kind + "\t" + p.title + "\n";
     prose::write_text(out_ / "pages.txt", list);
     fs::remove_all(out_ / ".work");
 
     std::cout << "book: " << pages_.size() << " pages (" << n << " chapters), " << figures_copied_ << " figures, "
-              << values_shown_ << " values from " << values_.dir().string();
-    if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured by this build";
+              << values_shown_ << " values from " << (own_run() ? figures_.string() : "the committed reports");
+    if (values_committed_) std::cout << ", " << values_committed_ << " from the committed reports";
+    if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured";
     std::cout << "\n      " << (out_ / "index.html").string() << "\n";
     for (const auto& note : notes_) std::cout << "  note: " << note << "\n";
     for (const auto& p : problems_) std::cout << "  " << p << "\n";
@@ -637,8 +790,10 @@ int Book::render() {
 }
 
 int usage() {
-    std::cerr << "usage: book --render <root> --values <dir> --figures <dir> --out <dir> [--pandoc <exe>] [--label <text>] [--strict]\n"
-                 "       book --check-structure <root>\n";
+    std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] [--label <text>]\n"
+                 "            [--strict]\n"
+                 "       book --check-structure <root>\n"
+                 "       book --check-figures <root> <folder of SVG figures>...\n";
     return 2;
 }
 
@@ -648,13 +803,18 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.size() == 2 && args[0] == "--check-structure") return check_structure(fs::absolute(args[1]));
+        if (args.size() >= 2 && args[0] == "--check-figures") {
+            std::vector<fs::path> trees;
+            for (std::size_t i = 2; i < args.size(); ++i) trees.push_back(fs::absolute(args[i]));
+            return check_figures(fs::absolute(args[1]), trees);
+        }
         if (args.size() < 2 || args[0] != "--render") return usage();
         std::map<std::string, std::string> opt{{"--pandoc", "pandoc"}};
         bool strict = false;
         for (std::size_t i = 2; i < args.size(); ++i) {
             if (args[i] == "--strict") {
                 strict = true;
-            } else if (i + 1 < args.size() && (args[i] == "--values" || args[i] == "--figures" || args[i] == "--out" ||
+            } else if (i + 1 < args.size() && (args[i] == "--runs" || args[i] == "--figures" || args[i] == "--out" ||
                                                args[i] == "--pandoc" || args[i] == "--label")) {
                 opt[args[i]] = args[i + 1];
                 ++i;
@@ -663,12 +823,13 @@ int main(int argc, char** argv) {
                 return usage();
             }
         }
-        for (const char* need : {"--values", "--figures", "--out"})
+        for (const char* need : {"--runs", "--out"})
             if (!opt.count(need)) {
                 std::cerr << "book: " << need << " is required\n";
                 return usage();
             }
-        Book book(fs::absolute(args[1]), fs::absolute(opt["--values"]), fs::absolute(opt["--figures"]),
+        const fs::path root = fs::absolute(args[1]);
+        Book book(root, fs::absolute(opt["--runs"]), opt.count("--figures") ? fs::absolute(opt["--figures"]) : root / "figures",
                   fs::absolute(opt["--out"]), opt["--pandoc"], opt["--label"], strict);
         return book.render();
     } catch (const std::exception& e) {

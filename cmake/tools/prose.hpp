@@ -1,6 +1,6 @@
 // What the book's tools share (snippets.cpp checks the prose, book.cpp renders it):
-// reading files, the code snippets of the sources, the value markers of the prose and the
-// scenes' JSON reports they are filled from.
+// reading files, the code snippets of the sources, the value markers of the prose, the runs
+// of the scenes that produce the values, and the JSON reports they are read from.
 //
 // A code snippet, in a source file (exercises/rigid/*.hpp, chapters/**/*.cpp|hpp, tests/*):
 //     // snippet: NAME
@@ -13,15 +13,25 @@
 //     ```
 //     <!-- end snippet -->
 //
-// A value, inline in the prose, filled from a scene's JSON report (report/<scene>.json):
-//     <!-- value: SCENE.KEY[.KEY|[ROW]|[COLUMN=X]]... [fmt=F] [scale=S] -->TEXT<!-- end value -->
-// TEXT is the value as last written into the source; the rendered book always shows the
-// value of the build's own run. KEY paths: `pure_rotation.error`, `pure_rotation.axis[2]`,
-// `omega_finite_difference.by_stencil[order=8].best_error` (a kit::Report table: the row whose
-// column `order` is 8, then its column `best_error`); `by_stencil[0].best_h` picks row 0.
-// F is a printf format for one number (%.2g, %.3e, %.0f, %d) or sciN: N significant digits
-// as 8.2×10⁻¹² (readable on GitHub and in the book alike). S multiplies first (1e9: s -> ns).
-// Markers inside code (fenced blocks, `code spans`) are text, not markers.
+// A value, inline in the prose, read from the JSON report of one run of a scene:
+//     <!-- value: SCENE.KEY[.KEY|[ROW]|[COLUMN=X]]... run=RUN [fmt=F] [scale=S] -->TEXT<!-- end value -->
+// RUN names the run whose options the prose describes: `default` is the scene as
+// `cmake/workbook run` runs it (its ARGS in the chapter's CMakeLists.txt); any other name is a
+// run declared there with workbook_scene_run() (e.g. work_precision's `full_sweep`). The test
+// suite's light runs (SMOKE_ARGS) are never quoted. KEY paths: `pure_rotation.error`,
+// `pure_rotation.axis[2]`, `omega_finite_difference.by_stencil[order=8].best_error` (a
+// kit::Report table: the row whose column `order` is 8, then its column `best_error`);
+// `by_stencil[0].best_h` picks row 0. F is a printf format for one number (%.2g, %.3e, %.0f, %d)
+// or sciN: N significant digits as 8.2×10⁻¹² (readable on GitHub and in the book alike). S
+// multiplies first (1e9: s -> ns). Markers inside code (fenced blocks, `code spans`) are text.
+//
+// Where a run's report is: <tree>/<chapter>/<scene>.json for the default run and
+// <tree>/<chapter>/<run>/<scene>.json for a named one, next to the figures that run drew. The
+// committed tree is <root>/figures (refreshed only by the target update-figures); a build's
+// own tree is <build>/figures. Every report carries "run": {"name": ..., "args": [...]}, written
+// by cmake/run_scenes.cmake, and is only read for a marker whose run it is. TEXT is the value
+// of the committed report (snippets --update writes it); the rendered book shows its own run's.
+// A value the scene marks as not measured (null, -1, "not measured") is an error, never shown.
 #pragma once
 
 #include <algorithm>
@@ -326,9 +336,11 @@ private:
 struct ValueMarker {
     std::size_t begin = 0, end = 0;  // the whole marker in the line: [begin, end)
     std::size_t text_begin = 0, text_end = 0;
-    std::string path, fmt = "%.3g", text;
+    std::string path, run, fmt = "%.3g", text;
     double scale = 1;
     std::string error;  // a malformed marker says why
+
+    std::string scene() const { return path.substr(0, path.find_first_of(".[")); }
 };
 
 // The value markers of one line (outside code spans).
@@ -371,10 +383,17 @@ inline std::vector<ValueMarker> find_value_markers(const std::string& line) {
                 v.scale = std::strtod(val.c_str(), &end);
                 if (end == val.c_str() || *end != '\0' || !std::isfinite(v.scale))
                     v.error = "scale=" + val + ": not a number";
+            } else if (key == "run") {
+                static const std::regex ok(R"([a-z][a-z0-9_]*)");
+                if (!std::regex_match(val, ok)) v.error = "run=" + val + ": a run's name is lower case, digits and _";
+                v.run = val;
             } else {
-                v.error = "unknown option '" + key + "' (known: fmt, scale)";
+                v.error = "unknown option '" + key + "' (known: run, fmt, scale)";
             }
         }
+        if (v.error.empty() && v.run.empty())
+            v.error = "states no run: add run=default (the scene as cmake/workbook run runs it) or the name of a run "
+                      "declared with workbook_scene_run()";
         out.push_back(v);
     }
     return out;
@@ -407,30 +426,101 @@ inline std::string format_number(double x, const std::string& fmt) {
     return buf;
 }
 
-// The scenes' reports in one folder: <dir>/<scene>.json, read once each.
-class Values {
-public:
-    explicit Values(fs::path dir) : dir_(std::move(dir)) {}
-    const fs::path& dir() const { return dir_; }
+// ------------------------------------------------------------------------------ runs
 
-    // The report of a scene, or nullptr when this build has none.
-    const Json* scene(const std::string& name) {
-        auto it = cache_.find(name);
+// One run of a scene, as CMake declares it (<build>/runs.txt, one per line:
+// scene|chapter|run|arg|arg...).
+struct RunDecl {
+    std::string scene, chapter, run;
+    std::vector<std::string> args;
+};
+
+class Runs {
+public:
+    Runs() = default;
+    explicit Runs(const fs::path& file) {
+        if (!fs::exists(file)) throw std::runtime_error(file.string() + ": no list of runs (configure the build first)");
+        for (const auto& line : read_lines(file)) {
+            if (line.empty()) continue;
+            std::vector<std::string> parts;
+            std::string part;
+            std::istringstream in(line);
+            while (std::getline(in, part, '|')) parts.push_back(part);
+            if (parts.size() < 3) throw std::runtime_error(file.string() + ": bad line '" + line + "'");
+            RunDecl d{parts[0], parts[1], parts[2], {parts.begin() + 3, parts.end()}};
+            decls_[{d.scene, d.run}] = d;
+        }
+    }
+    const RunDecl* find(const std::string& scene, const std::string& run) const {
+        const auto it = decls_.find({scene, run});
+        return it == decls_.end() ? nullptr : &it->second;
+    }
+    bool has_scene(const std::string& scene) const {
+        for (const auto& [k, d] : decls_)
+            if (k.first == scene) return true;
+        return false;
+    }
+    std::string names(const std::string& scene) const {
+        std::string out;
+        for (const auto& [k, d] : decls_)
+            if (k.first == scene) out += (out.empty() ? "" : ", ") + k.second;
+        return out.empty() ? "none" : out;
+    }
+
+private:
+    std::map<std::pair<std::string, std::string>, RunDecl> decls_;
+};
+
+// Where a run keeps its figures and its report, inside a tree of figures.
+inline fs::path run_folder(const fs::path& tree, const RunDecl& d) {
+    return d.run == "default" ? tree / d.chapter : tree / d.chapter / d.run;
+}
+inline fs::path report_path(const fs::path& tree, const RunDecl& d) { return run_folder(tree, d) / (d.scene + ".json"); }
+
+inline std::string join_args(const std::vector<std::string>& args) {
+    std::string out;
+    for (const auto& a : args) out += (out.empty() ? "" : " ") + a;
+    return out.empty() ? "(no options)" : out;
+}
+
+// ------------------------------------------------------------------------------ reports
+
+// The reports of one tree of figures, read once each.
+class Reports {
+public:
+    explicit Reports(fs::path tree) : tree_(std::move(tree)) {}
+    const fs::path& tree() const { return tree_; }
+
+    // The report of the run `d` in this tree, or nullptr when there is none. Throws when the
+    // file is there but is not that run's report (made with other options, or unreadable).
+    const Json* report(const RunDecl& d) {
+        const fs::path p = report_path(tree_, d);
+        auto it = cache_.find(p.string());
         if (it != cache_.end()) return it->second.get();
         std::unique_ptr<Json> j;
-        const fs::path p = dir_ / (name + ".json");
         if (fs::exists(p)) {
             try {
                 j = std::make_unique<Json>(JsonParser(read_text(p)).parse());
             } catch (const std::exception& e) {
                 throw std::runtime_error(p.string() + ": " + e.what());
             }
+            const Json* run = j->field("run");
+            const Json* name = run ? run->field("name") : nullptr;
+            const Json* args = run ? run->field("args") : nullptr;
+            if (!name || !args || name->kind != Json::String || args->kind != Json::Array)
+                throw std::runtime_error(p.string() + ": no \"run\" record (name, args): not written by cmake/run_scenes.cmake");
+            std::vector<std::string> a;
+            for (const auto& x : args->items) a.push_back(x.text);
+            if (name->text != d.run || a != d.args)
+                throw std::runtime_error(p.string() + " comes from the run '" + name->text + "' with " + join_args(a) +
+                                         ", but the run '" + d.run + "' of " + d.scene + " is declared with " +
+                                         join_args(d.args) + " (run it again)");
         }
-        return (cache_[name] = std::move(j)).get();
+        return (cache_[p.string()] = std::move(j)).get();
     }
 
 private:
-    fs::path dir_;
+    fs::path tree_;
     std::map<std::string, std::unique_ptr<Json>> cache_;
 };
 
@@ -504,19 +594,28 @@ inline const Json& lookup(const Json& report, const std::string& path) {
     return *node;
 }
 
-// The text a marker shows for the value `path` (SCENE.KEY...) in `values`. Throws saying
-// what is missing; returns nullopt when this build has no report of the scene at all.
-inline std::optional<std::string> resolve(const ValueMarker& v, Values& values) {
+// The text a marker shows for its value in `report`. Throws saying what is missing, or that
+// the run did not measure it: null (not finite), the number -1 (the scenes' mark for "not
+// measured" or "none") or a word that says so.
+inline std::string resolve(const ValueMarker& v, const Json& report) {
     const auto dot = v.path.find_first_of(".[");
     if (dot == std::string::npos || v.path[dot] != '.')
         throw std::runtime_error("'" + v.path + "': name a scene and a key, e.g. pure_rotation.error");
-    const std::string scene = v.path.substr(0, dot);
-    const Json* report = values.scene(scene);
-    if (!report) return std::nullopt;
-    const Json& x = lookup(*report, v.path.substr(dot));
-    if (x.kind == Json::Number) return format_number(v.scale * x.number, v.fmt);
-    if (x.kind == Json::String && v.scale == 1) return x.text;
-    throw std::runtime_error("'" + v.path + "' is " + (x.kind == Json::Null ? "null (not finite)" : "not a number"));
+    const Json& x = lookup(report, v.path.substr(dot));
+    const std::string run = "the run '" + v.run + "'";
+    if (x.kind == Json::Null) throw std::runtime_error("'" + v.path + "' is null in " + run + ": not finite, or not measured");
+    if (x.kind == Json::Number) {
+        if (x.number == -1)
+            throw std::runtime_error("'" + v.path + "' is -1 in " + run + ", the scenes' mark for a value not measured");
+        return format_number(v.scale * x.number, v.fmt);
+    }
+    if (x.kind == Json::String && v.scale == 1) {
+        static const std::regex placeholder(R"(\s*(not measured|not run|none|n/a|—|-|)\s*)", std::regex::icase);
+        if (std::regex_match(x.text, placeholder))
+            throw std::runtime_error("'" + v.path + "' is \"" + x.text + "\" in " + run + ": not measured");
+        return x.text;
+    }
+    throw std::runtime_error("'" + v.path + "' is not a number");
 }
 
 }  // namespace prose

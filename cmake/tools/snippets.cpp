@@ -7,14 +7,25 @@
 //                                         std::, Eigen::, boost::, doctest::, gsl_), `test:`
 //                                         prefixes, `paths/to/files.cpp`, and the scenes, options
 //                                         and graders of the ```sh examples
-//   snippets --check-values <root> <dir>  fail on a value marker whose key the scenes'
-//                                         reports in <dir> (<scene>.json) do not have
-//   snippets --update       <root> [dir]  rewrite the quoted code from the sources and, with
-//                                         <dir>, the quoted values from the reports
+//   snippets --check-values <root> <runs.txt> [<smoke>]
+//                                         fail on a value marker whose run is not declared, whose
+//                                         committed report (<root>/figures/...) is missing, made
+//                                         with other options, lacks the key or marks it as not
+//                                         measured, or whose text differs from that report; with
+//                                         <smoke> (the test suite's reports, <scene>.json), also
+//                                         on a key the scenes as built no longer report
+//   snippets --update       <root> [<runs.txt>]
+//                                         rewrite the quoted code from the sources and, with
+//                                         <runs.txt>, the quoted values from the committed reports
+//   snippets --diff         <root> <runs.txt> <tree>
+//                                         compare every value marker with its run's report in
+//                                         <tree> (a build's figures): per chapter, how many agree
+//                                         with the committed text, and each one that does not
 //
-// The committed prose carries the values of the last `--update`; the rendered book (book.cpp)
-// always shows the values of its own build. So a value is "stale" only when its key no longer
-// exists: run times change from run to run, and round-off errors from machine to machine.
+// The committed prose carries the values of the committed reports, which the target
+// update-figures copies, with the figures, from a `cmake/workbook run`; the rendered book shows
+// the values of its own run. Run times change from run to run and round-off from machine to
+// machine, so a fresh run may differ from the text: --diff lists where.
 #include <algorithm>
 #include <iostream>
 #include <set>
@@ -30,20 +41,45 @@ namespace {
 
 // ------------------------------------------------------------------ code snippets and values
 
+enum class Mode { check, check_values, update, diff };
+
 // Checks (or refreshes) the quoted code and the value markers of every prose file.
-int snippets_and_values(const fs::path& root, bool update, const fs::path* values_dir, bool check_values) {
+//   runs:  the declared runs (check_values, update with values, diff)
+//   smoke: the test suite's reports (check_values; may be null)
+//   tree:  a build's figures (diff)
+int snippets_and_values(const fs::path& root, Mode mode, const prose::Runs* runs, const fs::path* smoke,
+                        const fs::path* tree) {
+    const bool update = mode == Mode::update;
     std::vector<std::string> problems;
-    const auto tree = prose::scan_tree(root);
-    auto snippets = prose::collect_snippets(root, tree.sources, problems);
-    std::optional<prose::Values> values;
-    if (values_dir) values.emplace(*values_dir);
+    const auto tree_files = prose::scan_tree(root);
+    auto snippets = prose::collect_snippets(root, tree_files.sources, problems);
+    prose::Reports committed(root / "figures");
+    std::optional<prose::Reports> other;
+    if (tree) other.emplace(*tree);
 
     std::set<std::string> scenes;  // a scene is chapters/*/<scene>.cpp
-    for (const auto& p : tree.sources)
+    for (const auto& p : tree_files.sources)
         if (rel(p, root).rfind("chapters/", 0) == 0 && p.extension() == ".cpp") scenes.insert(p.stem().string());
 
-    int quoted = 0, stale = 0, n_values = 0, refreshed = 0, unmeasured = 0;
-    for (const auto& p : tree.prose) {
+    // A smoke report: <smoke>/<scene>.json, read once.
+    std::map<std::string, std::unique_ptr<prose::Json>> smoke_reports;
+    auto smoke_report = [&](const std::string& scene) -> const prose::Json* {
+        if (!smoke) return nullptr;
+        auto it = smoke_reports.find(scene);
+        if (it != smoke_reports.end()) return it->second.get();
+        std::unique_ptr<prose::Json> j;
+        const fs::path p = *smoke / (scene + ".json");
+        if (fs::exists(p)) j = std::make_unique<prose::Json>(prose::JsonParser(prose::read_text(p)).parse());
+        return (smoke_reports[scene] = std::move(j)).get();
+    };
+
+    int quoted = 0, stale = 0, n_values = 0, refreshed = 0;
+    struct Tally {
+        int values = 0, same = 0, differ = 0, missing = 0;
+    };
+    std::map<std::string, Tally> tally;  // diff: per prose file
+    std::vector<std::string> differences;
+    for (const auto& p : tree_files.prose) {
         if (!fs::exists(p)) continue;
         const auto lines = prose::read_lines(p);
         std::vector<std::string> out;
@@ -66,23 +102,63 @@ int snippets_and_values(const fs::path& root, bool update, const fs::path* value
                     problems.push_back(at + ": " + v->error);
                     continue;
                 }
-                const std::string scene = v->path.substr(0, v->path.find_first_of(".["));
+                const std::string scene = v->scene();
                 if (!scenes.count(scene)) {
                     problems.push_back(at + ": there is no scene '" + scene + "' (chapters/*/" + scene + ".cpp)");
                     continue;
                 }
-                if (!values) continue;
+                if (!runs) continue;
+                const prose::RunDecl* d = runs->find(scene, v->run);
+                if (!d) {
+                    problems.push_back(at + ": the scene " + scene + " has no run '" + v->run + "' (declared: " +
+                                       runs->names(scene) + ")");
+                    continue;
+                }
                 try {
-                    const auto text = prose::resolve(*v, *values);
-                    if (!text) {
-                        ++unmeasured;
-                        if (check_values) problems.push_back(at + ": no report " + (values->dir() / (scene + ".json")).string());
+                    if (mode == Mode::diff) {
+                        auto& t = tally[rel(p, root)];
+                        ++t.values;
+                        const prose::Json* r = other->report(*d);
+                        if (!r) {
+                            ++t.missing;
+                            differences.push_back(at + " (" + v->run + "): no report in " + other->tree().string());
+                            continue;
+                        }
+                        const std::string text = prose::resolve(*v, *r);
+                        if (text == v->text) {
+                            ++t.same;
+                        } else {
+                            ++t.differ;
+                            differences.push_back(at + " (" + v->run + "): text " + v->text + ", this run " + text);
+                        }
                         continue;
                     }
-                    if (update && *text != v->text) {
-                        line.replace(v->text_begin, v->text_end - v->text_begin, *text);
+                    if (mode == Mode::check_values) {
+                        if (const prose::Json* s = smoke_report(scene)) {
+                            try {
+                                prose::lookup(*s, v->path.substr(v->path.find_first_of(".[")));
+                            } catch (const std::exception& e) {
+                                problems.push_back(at + ": the scene as built no longer reports it (its test run: " +
+                                                   e.what() + ")");
+                            }
+                        }
+                    }
+                    const prose::Json* r = committed.report(*d);
+                    if (!r) {
+                        problems.push_back(at + ": no committed report " + rel(prose::report_path(root / "figures", *d), root) +
+                                           " (run cmake/workbook run, then the target update-figures)");
+                        continue;
+                    }
+                    const std::string text = prose::resolve(*v, *r);
+                    if (text == v->text) continue;
+                    if (update) {
+                        line.replace(v->text_begin, v->text_end - v->text_begin, text);
                         ++refreshed;
                         changed = true;
+                    } else {
+                        problems.push_back(at + ": the text says '" + v->text + "', its committed report " +
+                                           rel(prose::report_path(root / "figures", *d), root) + " says '" + text +
+                                           "' (run the target update-snippets)");
                     }
                 } catch (const std::exception& e) {
                     problems.push_back(at + ": " + e.what());
@@ -113,7 +189,7 @@ int snippets_and_values(const fs::path& root, bool update, const fs::path* value
             if (current != wanted) {
                 ++stale;
                 if (update) changed = true;
-                else
+                else if (mode == Mode::check)
                     problems.push_back(where + ": snippet '" + name + "' differs from " + s->second.file + ":" +
                                        std::to_string(s->second.line) +
                                        " (run: cmake --build <build> --target update-snippets)");
@@ -130,18 +206,32 @@ int snippets_and_values(const fs::path& root, bool update, const fs::path* value
             std::cout << "updated " << rel(p, root) << "\n";
         }
     }
-    for (const auto& [name, s] : snippets)
-        if (!s.used) problems.push_back(s.file + ":" + std::to_string(s.line) + ": snippet '" + name + "' is not quoted anywhere in the prose");
+    if (mode == Mode::check)
+        for (const auto& [name, s] : snippets)
+            if (!s.used) problems.push_back(s.file + ":" + std::to_string(s.line) + ": snippet '" + name + "' is not quoted anywhere in the prose");
 
+    if (mode == Mode::diff) {
+        Tally all;
+        std::cout << "The value markers against the reports in " << tree->string() << ":\n";
+        for (const auto& [file, t] : tally) {
+            std::cout << "  " << file << ": " << t.values << " values, " << t.same << " as in the text, " << t.differ
+                      << " different, " << t.missing << " without a report\n";
+            all.values += t.values, all.same += t.same, all.differ += t.differ, all.missing += t.missing;
+        }
+        std::cout << "  all: " << all.values << " values, " << all.same << " as in the text, " << all.differ
+                  << " different, " << all.missing << " without a report\n";
+        for (const auto& d : differences) std::cout << "  " << d << "\n";
+        for (const auto& p : problems) std::cout << "  " << p << "\n";
+        return problems.empty() ? 0 : 1;
+    }
     std::cout << snippets.size() << " snippets in the sources, " << quoted << " quotations in the prose";
     if (update) std::cout << ", " << stale << " refreshed";
     std::cout << "; " << n_values << " value markers";
-    if (values) {
-        std::cout << " (reports in " << values->dir().string() << ")";
+    if (runs) {
+        std::cout << " (committed reports in " << (root / "figures").string() << ")";
         if (update) std::cout << ", " << refreshed << " refreshed";
-        if (unmeasured) std::cout << ", " << unmeasured << " without a report (left as they were)";
     } else if (update) {
-        std::cout << " (not refreshed: no report folder given)";
+        std::cout << " (not refreshed: no list of runs given)";
     }
     std::cout << "\n";
     for (const auto& p : problems) std::cout << "  " << p << "\n";
@@ -164,7 +254,7 @@ Corpus read_corpus(const fs::path& root) {
         for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
             if (!e.is_regular_file()) continue;
             const auto ext = e.path().extension().string();
-            if (ext == ".md" || ext == ".svg" || ext == ".png") continue;
+            if (ext == ".md" || ext == ".svg" || ext == ".png" || ext == ".json" || ext == ".csv") continue;  // outputs, not code
             if (rel(e.path(), root).rfind("cmake/tools/", 0) == 0) continue;  // the tools talk about markers
             files.push_back(e.path());
         }
@@ -292,8 +382,8 @@ int check_names(const fs::path& root) {
 }
 
 int usage() {
-    std::cerr << "usage: snippets --check <root> | --check-names <root> | --check-values <root> <reports>\n"
-                 "                | --update <root> [<reports>]\n";
+    std::cerr << "usage: snippets --check <root> | --check-names <root> | --check-values <root> <runs.txt> [<smoke>]\n"
+                 "                | --update <root> [<runs.txt>] | --diff <root> <runs.txt> <tree>\n";
     return 2;
 }
 
@@ -304,17 +394,22 @@ int main(int argc, char** argv) {
     const std::string mode = argv[1];
     const fs::path root = fs::absolute(argv[2]);
     try {
-        if (mode == "--check" && argc == 3) return snippets_and_values(root, false, nullptr, false);
+        if (mode == "--check" && argc == 3) return snippets_and_values(root, Mode::check, nullptr, nullptr, nullptr);
         if (mode == "--check-names" && argc == 3) return check_names(root);
-        if (mode == "--check-values" && argc == 4) {
-            const fs::path dir = fs::absolute(argv[3]);
-            return snippets_and_values(root, false, &dir, true);
+        if (mode == "--check-values" && (argc == 4 || argc == 5)) {
+            const prose::Runs runs(argv[3]);
+            const fs::path smoke = argc == 5 ? fs::absolute(argv[4]) : fs::path();
+            return snippets_and_values(root, Mode::check_values, &runs, argc == 5 ? &smoke : nullptr, nullptr);
         }
         if (mode == "--update" && (argc == 3 || argc == 4)) {
-            fs::path dir = argc == 4 ? fs::absolute(argv[3]) : fs::path();
-            const bool have = argc == 4 && fs::is_directory(dir);
-            if (argc == 4 && !have) std::cout << "no scene reports in " << dir.string() << " yet (run: cmake/workbook run): values left as they are\n";
-            return snippets_and_values(root, true, have ? &dir : nullptr, false);
+            if (argc == 3) return snippets_and_values(root, Mode::update, nullptr, nullptr, nullptr);
+            const prose::Runs runs(argv[3]);
+            return snippets_and_values(root, Mode::update, &runs, nullptr, nullptr);
+        }
+        if (mode == "--diff" && argc == 5) {
+            const prose::Runs runs(argv[3]);
+            const fs::path tree = fs::absolute(argv[4]);
+            return snippets_and_values(root, Mode::diff, &runs, nullptr, &tree);
         }
     } catch (const std::exception& e) {
         std::cerr << "snippets: " << e.what() << "\n";
