@@ -61,8 +61,11 @@ std::size_t skip_blank(const std::string& s, std::size_t i, int& line, bool& lin
         } else if (std::isspace(static_cast<unsigned char>(c))) {
             ++i;
         } else if (s.compare(i, 2, "//") == 0 || (c == '#' && line_start)) {
-            // A comment or a directive runs to the end of the line (a directive continues past "\\\n").
-            while (i < s.size() && s[i] != '\n') i += (s[i] == '\\' && i + 1 < s.size() && c == '#') ? 2 : 1;
+            // A comment or a directive runs to the end of the line (a directive, past a "\\" that ends one).
+            while (i < s.size() && s[i] != '\n') {
+                if (c == '#' && s[i] == '\\' && i + 1 < s.size() && s[i + 1] == '\n') ++line, ++i;
+                ++i;
+            }
         } else if (s.compare(i, 2, "/*") == 0) {
             const std::size_t end = s.find("*/", i + 2);
             const std::size_t stop = end == std::string::npos ? s.size() : end + 2;

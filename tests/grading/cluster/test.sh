@@ -119,7 +119,7 @@ MpiDefault=none
 SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 SchedulerType=sched/backfill
-SchedulerParameters=sched_min_interval=100000
+SchedulerParameters=sched_min_interval=100000,batch_sched_delay=0
 ReturnToService=2
 NodeName=$1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=workbook Nodes=$1 Default=YES MaxTime=INFINITE State=UP
