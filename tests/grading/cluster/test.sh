@@ -96,7 +96,7 @@ write_slurm_conf() {
   cat > "$slurm_dir/slurm.conf" <<EOF
 # A single-node cluster for the test suite (tests/grading/cluster/test.sh); nothing outside $slurm_dir.
 ClusterName=workbook
-SlurmctldHost=$1
+SlurmctldHost=$1(127.0.0.1)
 SlurmctldPort=$2
 SlurmdPort=$3
 SlurmUser=root
@@ -121,7 +121,7 @@ SelectTypeParameters=CR_CPU
 SchedulerType=sched/backfill
 SchedulerParameters=sched_min_interval=100000,batch_sched_delay=0
 ReturnToService=2
-NodeName=$1 CPUs=$(nproc) State=UNKNOWN
+NodeName=$1 NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=workbook Nodes=$1 Default=YES MaxTime=INFINITE State=UP
 EOF
 }
