@@ -12,7 +12,8 @@
 # Both check every result, the class files, the similarity report and the LMS files
 # (grading_class check), and that the final run graded nothing itself. The commands are taken
 # from README.md (the blocks after "<!-- run by tests/grading/cluster/test.sh ... -->"), so
-# the README says exactly what this runs. Exits 77 (skipped) with the reason when an engine
+# the README says exactly what this runs. Slurm grades the class of 30, GNU parallel 10 of them.
+# Exits 77 (skipped) with the reason when an engine
 # cannot start here: Slurm needs root.
 set -euo pipefail
 engine=$1 root=$2 build=$3 work=$4 class_tool=$5
@@ -40,8 +41,12 @@ recipe() {
   printf '%s\n' "$text"
 }
 
+# Slurm grades the class of 30; GNU parallel 10 of them (one of each kind the report must tell
+# apart), to keep the suite's time: the two recipes share everything but the engine.
+size=30
+[[ $engine == parallel ]] && size=10
 rm -rf "$work" && mkdir -p "$work"
-"$class_tool" make --setup "$build/grading" --out "$work/submissions" --expect "$work/expected.tsv"
+"$class_tool" make --setup "$build/grading" --out "$work/submissions" --expect "$work/expected.tsv" --size "$size"
 export WORKBOOK=$root SUBMISSIONS=$work/submissions GRADES=$work/grades
 
 # ---- Slurm -------------------------------------------------------------------------------------
@@ -150,6 +155,6 @@ end=$(date +%s.%N)
 tail -n 4 "$work/run.txt"
 grep -q '"graded": 0,' "$GRADES/run.json" || fail "the class files' run graded something itself: $(head -c 400 "$GRADES/run.json")"
 [[ -z $(ls "$GRADES/.work" 2>/dev/null) ]] || fail "left in $GRADES/.work: $(ls "$GRADES/.work")"
-"$class_tool" check --setup "$build/grading" --class "$SUBMISSIONS" --expect "$work/expected.tsv" --grades "$GRADES"
+"$class_tool" check --setup "$build/grading" --class "$SUBMISSIONS" --expect "$work/expected.tsv" --grades "$GRADES" --size "$size"
 awk -v e="$engine" -v n="$(ls "$SUBMISSIONS" | wc -l)" -v s="$start" -v t="$end" \
   'BEGIN { printf "== %s: %d submissions graded and the class files written in %.1f s of wall time\n", e, n, t - s }'
