@@ -194,10 +194,36 @@ std::string results_json(const Setup& setup, const SubmissionResult& result);
 std::string results_tsv(const SubmissionResult& result, const std::string& json = "");
 bool read_results_tsv(const std::string& path, SubmissionResult& result);
 
+// ---- similarity (similarity.cpp) ----------------------------------------------------------------
+// Code that matches the reference solution or another submission, exercise by exercise, after
+// names, whitespace, comments and literals are normalised (winnowed token fingerprints, as MOSS).
+struct ClassFiles {
+    std::string student;
+    std::vector<SubmittedFile> files;  // one per topic of the setup, as collect_files returns them
+};
+
+struct SimilarityHit {
+    std::string topic, exercise, student;
+    std::string other;                // a submission, or "" for the reference solution
+    double score = 0, file_score = 0;  // shared / the smaller fingerprint set, for the exercise and the whole file
+    int shared = 0, fingerprints = 0, other_fingerprints = 0, tokens = 0;
+    std::string lines, other_lines;   // the lines the shared fingerprints cover, on each side
+    bool listed = true;               // false: below the report's rules (returned only with `all`)
+};
+
+// The pairs the report lists; with `all`, every pair that shares a fingerprint (for measuring).
+// The writers below take listed hits only.
+std::vector<SimilarityHit> find_similar(const Setup& setup, const std::vector<ClassFiles>& files, bool all = false);
+std::string similarity_markdown(const Setup& setup, const std::vector<SimilarityHit>& hits, std::size_t submissions);
+std::string similarity_csv(const std::vector<SimilarityHit>& hits);
+
 // ---- reports (report.cpp) -------------------------------------------------------------------
 std::string class_csv(const Setup& setup, const std::vector<SubmissionResult>& results);
 std::string class_summary(const Setup& setup, const std::vector<SubmissionResult>& results,
                           const std::vector<std::string>& ignored);
+// The total scores for an LMS's gradebook import (gradebook.cpp): Canvas and Moodle.
+std::string canvas_csv(const std::vector<SubmissionResult>& results, const std::string& assignment);
+std::string moodle_csv(const std::vector<SubmissionResult>& results, const std::string& assignment);
 // The student's view: progress per chapter, the first exercise that does not pass, its hint.
 // Returns true when every selected exercise passes.
 bool print_check(const Setup& setup, const SubmissionResult& result, const std::string& folder);

@@ -2,12 +2,14 @@
 //
 //   workbook_grade grade --setup <build>/grading <submissions> <out> [options]
 //   workbook_grade check --setup <build>/grading [--folder <exercises>] [chapter|topic|exercise]
+//   workbook_grade similarity --setup <build>/grading <submissions> <out>
 //   workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>
 //
 // grade: one folder per student in <submissions>, each holding exercises/*.cpp (or the .cpp
 // files directly). Writes <out>/results/<student>.json (Gradescope's results.json),
-// <out>/class.csv, <out>/summary.md and <out>/run.json (timings: the only file that changes
-// from run to run). Submissions are graded in parallel, each in its own worker process; a
+// <out>/class.csv, <out>/summary.md, <out>/canvas.csv and <out>/moodle.csv (the LMS imports),
+// <out>/similarity.md and .csv (similarity.cpp; the same as the similarity command writes) and
+// <out>/run.json (timings: the only file that changes from run to run). Submissions are graded in parallel, each in its own worker process; a
 // submission whose result is already there for the same inputs is not graded again.
 #include <fcntl.h>
 #include <poll.h>
@@ -42,6 +44,7 @@ const char* usage =
     "usage:\n"
     "  workbook_grade grade --setup <build>/grading <submissions-folder> <out-folder> [options]\n"
     "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [--out <folder>] [chapter|topic|exercise] [options]\n"
+    "  workbook_grade similarity --setup <build>/grading <submissions-folder> <out-folder>\n"
     "  workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>\n"
     "options:\n"
     "  -j <n>                 submissions graded at once (default: the number of cores)\n"
@@ -53,6 +56,7 @@ const char* usage =
     "  --max-file-size <KB>   largest exercise file taken from a submission (default 1024)\n"
     "  --only <name>          grade only this submission (repeat it, or join names with commas;\n"
     "                         a name that itself holds a comma is taken whole); for sharding: no class files\n"
+    "  --assignment <name>    the column of canvas.csv and moodle.csv (default: Grioli workbook)\n"
     "  --force                grade again even when a result for the same inputs exists\n"
     "  --keep-work            keep each submission's build folder (<out>/.work/)\n";
 
@@ -73,6 +77,7 @@ double number(const std::string& option, const char* value) {
 
 struct Args {
     std::string setup, topics, points, out, folder;
+    std::string assignment = "Grioli workbook";  // the column of canvas.csv and moodle.csv
     std::vector<std::string> positional;
     std::vector<std::string> only;  // as given: a name, or names joined by commas
     int jobs = 0;
@@ -107,6 +112,7 @@ Args parse(int argc, char** argv) {
         else if (o == "--build-memory") a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
         else if (o == "--max-file-size") a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
         else if (o == "--only") a.only.push_back(take());
+        else if (o == "--assignment") a.assignment = take();
         else if (o == "--force") a.force = true;
         else if (o == "--keep-work") a.options.keep_work = true;
         else if (o == "-h" || o == "--help") std::printf("%s", usage), std::exit(0);
@@ -128,6 +134,64 @@ std::string load(const Args& a, Setup& setup) {
     return load_setup(absolute(a.setup), setup);
 }
 
+// The submissions: one folder each. A hidden folder (.git, .DS_Store, an editor's backup) is not
+// a student: it is named in `ignored`, not graded; so is anything that is not a folder.
+void list_students(const std::string& submissions, std::vector<std::string>& students, std::vector<std::string>& ignored) {
+    for (const auto& name : list_dir(submissions)) {
+        const std::string path = submissions + "/" + name;
+        struct stat st;
+        if (lstat(path.c_str(), &st) != 0) continue;
+        if (starts_with(name, ".")) ignored.push_back(name + ": a hidden name (it starts with '.'), not graded; rename it to grade it");
+        else if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
+        else ignored.push_back(name + ": not a folder");
+    }
+}
+
+// similarity.md and similarity.csv in out: what matches the reference or another submission.
+// Returns how many submissions it lists.
+std::size_t write_similarity(const Setup& setup, const std::vector<ClassFiles>& files, const std::string& out) {
+    const std::vector<SimilarityHit> hits = find_similar(setup, files);
+    write_file(out + "/similarity.md", similarity_markdown(setup, hits, files.size()));
+    write_file(out + "/similarity.csv", similarity_csv(hits));
+    std::set<std::string> listed;
+    for (const auto& h : hits) {
+        listed.insert(h.student);
+        if (!h.other.empty()) listed.insert(h.other);
+    }
+    return listed.size();
+}
+
+// The class files: class.csv, summary.md, the LMS imports and the similarity report.
+void write_class_files(const Setup& setup, const Args& a, const std::string& out, const std::vector<SubmissionResult>& results,
+                       const std::vector<ClassFiles>& files, const std::vector<std::string>& ignored) {
+    write_file(out + "/class.csv", class_csv(setup, results));
+    write_file(out + "/summary.md", class_summary(setup, results, ignored));
+    write_file(out + "/canvas.csv", canvas_csv(results, a.assignment));
+    write_file(out + "/moodle.csv", moodle_csv(results, a.assignment));
+    const std::size_t listed = write_similarity(setup, files, out);
+    std::printf("Similarity: %zu submissions match the reference or one another on some exercise (%s/similarity.md)\n",
+                listed, out.c_str());
+}
+
+// ---- similarity ----------------------------------------------------------------------------------
+// The similarity report alone, without grading: workbook_grade similarity --setup <dir> <submissions> <out>.
+int similarity(const Args& a) {
+    if (a.positional.size() != 2) return fail(std::string("similarity needs <submissions-folder> <out-folder>\n") + usage);
+    Setup setup;
+    if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
+    const std::string submissions = absolute(a.positional[0]), out = absolute(a.positional[1]);
+    if (!is_directory(submissions)) return fail(submissions + " is not a folder");
+    if (!make_dirs(out)) return fail("cannot create " + out);
+    std::vector<std::string> students, ignored;
+    list_students(submissions, students, ignored);
+    std::vector<ClassFiles> files;
+    for (const auto& s : students) files.push_back({s, collect_files(setup, a.options, submissions + "/" + s)});
+    const std::size_t listed = write_similarity(setup, files, out);
+    std::printf("Compared %zu submissions: %zu match the reference or one another on some exercise (%s/similarity.md)\n",
+                files.size(), listed, out.c_str());
+    return 0;
+}
+
 // ---- grade -------------------------------------------------------------------------------------
 int grade(const Args& a) {
     if (a.positional.size() != 2) return fail(std::string("grade needs <submissions-folder> <out-folder>\n") + usage);
@@ -139,15 +203,7 @@ int grade(const Args& a) {
     if (starts_with(out + "/", submissions + "/")) return fail("the out folder must not be inside the submissions folder");
 
     std::vector<std::string> students, ignored;
-    for (const auto& name : list_dir(submissions)) {
-        const std::string path = submissions + "/" + name;
-        struct stat st;
-        if (lstat(path.c_str(), &st) != 0) continue;
-        // A hidden folder (.git, .DS_Store, an editor's backup) is not a student: it is named, not graded.
-        if (starts_with(name, ".")) ignored.push_back(name + ": a hidden name (it starts with '.'), not graded; rename it to grade it");
-        else if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
-        else ignored.push_back(name + ": not a folder");
-    }
+    list_students(submissions, students, ignored);
     std::set<std::string> only;
     for (const auto& value : a.only) {
         if (std::find(students.begin(), students.end(), value) != students.end()) {
@@ -348,9 +404,9 @@ int grade(const Args& a) {
 
     if (a.only.empty()) {
         std::vector<SubmissionResult> results;
-        for (const auto& item : items) results.push_back(item.result);
-        write_file(out + "/class.csv", class_csv(setup, results));
-        write_file(out + "/summary.md", class_summary(setup, results, ignored));
+        std::vector<ClassFiles> files;
+        for (const auto& item : items) results.push_back(item.result), files.push_back({item.name, item.files});
+        write_class_files(setup, a, out, results, files, ignored);
         // Timings and the date: they change from run to run, so they live apart from the results.
         char date[64];
         const std::time_t now = std::time(nullptr);
@@ -367,7 +423,7 @@ int grade(const Args& a) {
                    format_number(items[k].seconds) + ", \"cpu_seconds\": " + format_number(items[k].cpu) + "}";
         run += "\n  ]\n}\n";
         write_file(out + "/run.json", run);
-        std::printf("Results: %s/summary.md, %s/class.csv, %s/results/<student>.json\n", out.c_str(), out.c_str(),
+        std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n", out.c_str(), out.c_str(),
                     out.c_str());
     }
     return errors ? 1 : 0;
@@ -460,6 +516,7 @@ int main(int argc, char** argv) {
     }
     if (command == "grade") return grade(a);
     if (command == "check") return check(a);
+    if (command == "similarity") return similarity(a);
     if (command == "-h" || command == "--help" || command == "help") return std::printf("%s", usage), 0;
     return fail("unknown command '" + command + "'\n" + usage);
 }
