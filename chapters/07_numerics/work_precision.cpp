@@ -90,6 +90,10 @@ int main(int argc, char** argv) {
         for (const bench::Scenario& s : bench::scenarios())
             if (o.choice("scenario") == "all" || o.choice("scenario") == s.name) all.push_back(s);
         const auto& methods = bench::methods();
+        // The work: per scenario, the long-double reference and each method's sweep, which stops
+        // at the floor or at the budget's time per sweep (measured: about 0.15 of it on average).
+        kit::require_budget(o, {double(all.size()), 0.3 + double(methods.size()) * (0.15 * b.max_sweep_s + 0.5 * b.max_run_s),
+                                "scenarios", "--sweep, --scenario"});
 
         Progress progress;
         std::map<std::string, bench::Reference> refs;
