@@ -118,7 +118,6 @@ public:
     static constexpr double default_budget_s = 60;
 };
 
-// snippet: kit_budget
 // The work a request asks for, estimated before the scene starts: `units` of work (steps,
 // samples, runs) at about `seconds_per_unit` each (measured on one core of the machine the
 // workbook was written on), `unit` names them and `options` the options that set their number.
@@ -133,7 +132,6 @@ struct Work {
 // with a message naming the options, the estimate, and the largest number of units allowed.
 // Returns the estimate in seconds.
 double require_budget(const Options& o, const Work& w);
-// end snippet
 
 // One value in a report: a number, a count, a word, a 3-vector, or a list of numbers.
 using Value = std::variant<double, long, std::string, bool, rigid::Vec3, std::vector<double>>;
