@@ -19,6 +19,7 @@
 // draws it against L).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <numbers>
@@ -32,6 +33,16 @@
 
 using rigid::Mat3;
 using rigid::Vec3;
+
+namespace {
+
+std::string sci(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2g", x);
+    return buf;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_body",
@@ -112,7 +123,7 @@ int main(int argc, char** argv) {
                                         " steps between two outputs, the budget's share" +
                                         (gaps ? std::string(")")
                                               : "; the naive form's steps chase round-off of relative size eps B / A = " +
-                                                    std::to_string(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
+                                                    sci(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
                                                     " in Omega_dot_A: try --form gaps)"));
         }
         if (!std::isfinite(max_error)) throw kit::NumericalFailure("the integration produced a non-finite rotation");
