@@ -37,6 +37,8 @@ int main(int argc, char** argv) {
         // and eleven tolerances (about 9000 evaluations per radian turned), each `repeats` times.
         kit::require_budget(o, {repeats * (1885 * T * 4 + 9000 * w0.norm() * T), 1.5e-7, "evaluations of the equations",
                                 "--T, --Omega0, --repeats"});
+        // Every output time stops each of the 29 runs and is measured: about 1.2 us each.
+        kit::require_budget(o, {29.0 * repeats * double(times.size()), 1.2e-6, "output times (all runs)", "--outputs, --repeats"});
 
         // The reference, and what it costs.
         rigid::FreeBodyMotion exact;
