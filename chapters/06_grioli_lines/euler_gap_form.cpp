@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -228,9 +229,13 @@ int main(int argc, char** argv) {
         for (std::size_t b = 0; b < bodies.size(); ++b) legend += (b ? ", " : "") + std::to_string(b) + " = " + bodies[b].name;
         scene.report.note("bodies (A_g, B_g, C_g), mu = 1: " + legend + "; naive_error NaN: gave up after " +
                           std::to_string(naive_cap) + " steps between two outputs");
-        if (!(worst_stable <= 1e-9))
-            throw kit::CheckFailed("the gap form misses Theorem 1 by " + std::to_string(worst_stable) +
-                                   " rad where the precession is stable; the chapter promises 1e-9");
+        // The chapter's promise, for the tolerances it is made at (a looser one misses it by design).
+        if (tol <= 1e-12 && !(worst_stable <= 1e-9)) {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%.2g", worst_stable);
+            throw kit::CheckFailed(std::string("the gap form misses Theorem 1 by ") + buf +
+                                   " rad where the precession is stable; at tolerance <= 1e-12 the chapter promises 1e-9");
+        }
 
         kit::Figure fig(scene, "euler_gap_form.svg", 1100, 480);
         if (!fig.enabled()) return;
