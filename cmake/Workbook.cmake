@@ -196,16 +196,16 @@ endfunction()
 # A scene: a small driver in chapters/NN_slug/ that draws a figure or prints a table.
 #
 #   workbook_scene(<name> TOPICS <topic>... [FIGURES] [LIBS <target>...] [ARGS <arg>...]
-#                  [SMOKE_ARGS <arg>...])
+#                  [SMOKE_ARGS <arg>...] [CORNER_ARGS <arg>...])
 #
 # Links only what it names: the topics it uses, the kit, and the figure helper (Boost and
 # gnuplot-iostream) only with FIGURES. ARGS are the options of its run `default`, the one
 # `cmake/workbook run` makes and the book quotes (value markers with run=default). Registers a
 # smoke test (scene.<name>) that runs it with --json and checks its report and figures;
 # SMOKE_ARGS are added for that test only (a lighter run of a long scene, which the book never
-# quotes).
+# quotes). The corner sweep (below) starts from CORNER_ARGS when given, else from SMOKE_ARGS.
 function(workbook_scene name)
-  cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS;SMOKE_ARGS" ${ARGN})
+  cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS;SMOKE_ARGS;CORNER_ARGS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
   add_executable(${name} ${name}.cpp)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/scenes")
@@ -237,6 +237,15 @@ function(workbook_scene name)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_LIST "${chapter}|${name}|$<TARGET_FILE:${name}>${args}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_SCENE_TARGETS ${name})
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_RUN_LIST "${name}|${chapter}|default${args}")
+  if(S_CORNER_ARGS)
+    set(corner_args "${args}")
+    foreach(a IN LISTS S_CORNER_ARGS)
+      string(APPEND corner_args "|${a}")
+    endforeach()
+  else()
+    set(corner_args "${smoke_args}")
+  endif()
+  _workbook_scene_corners(${name} ${chapter} "${corner_args}")
 endfunction()
 
 # Another run of a scene that the book quotes (value markers with run=<run>): a long one that
@@ -261,6 +270,30 @@ function(workbook_scene_run scene run)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_EXTRA_RUN_TARGETS_${run} ${scene})
 endfunction()
 
+# The corner sweep: every numeric option of a scene at the smallest and the largest value it
+# accepts, one at a time (the others at their defaults, plus the scene's SMOKE_ARGS), with
+# --no-figure and a small budget (WORKBOOK_CORNER_BUDGET seconds). The scene lists its own
+# options and ranges (--list-options) when it is built; each corner is a CTest test of its own
+# (label "corner"), checked by cmake/corner_check.cmake: exit 0 within the budget, or exit 2
+# naming an option, or exit 1 with a message; never a crash or a hang.
+set(WORKBOOK_CORNER_BUDGET 3 CACHE STRING "The --budget (seconds) of the corner sweep's scene runs")
+function(_workbook_scene_corners name chapter base)
+  set(dir "${CMAKE_BINARY_DIR}/corners")
+  set(list_file "${dir}/${name}.cmake")
+  math(EXPR timeout "3 * ${WORKBOOK_CORNER_BUDGET} + 40")
+  add_custom_command(TARGET ${name} POST_BUILD
+    COMMAND ${CMAKE_COMMAND} -DSCENE=$<TARGET_FILE:${name}> -DNAME=${name} -DCHAPTER=${chapter} "-DBASE=${base}"
+            -DBUDGET=${WORKBOOK_CORNER_BUDGET} -DTIMEOUT=${timeout} -DOUT=${list_file} -DWORK=${dir}/runs
+            -DCHECK=${WORKBOOK_ROOT}/cmake/corner_check.cmake -P ${WORKBOOK_ROOT}/cmake/corner_list.cmake
+    VERBATIM)
+  # CTest reads the list when it runs; before the scene is built there is none, and one test says so.
+  set(include_file "${dir}/${name}.include.cmake")
+  file(WRITE "${include_file}"
+    "if(EXISTS \"${list_file}\")\n  include(\"${list_file}\")\nelse()\n"
+    "  add_test(\"corner: ${name} (not built yet)\" \"${CMAKE_COMMAND}\" -E false)\nendif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${include_file}")
+endfunction()
+
 # A bad-input check: the scene must exit with status 2, say MESSAGE (a regex) on stderr,
 # and leave no file behind.
 #
@@ -277,6 +310,24 @@ function(workbook_scene_rejects scene label)
                    "-DCOMMAND=$<TARGET_FILE:${scene}>|--out|${out}${args}"
                    -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
   set_tests_properties("bad input: ${scene} ${label}" PROPERTIES LABELS "scene;bad-input" TIMEOUT 60)
+endfunction()
+
+# A scene whose own check fails, or whose numerics fail: exit status 1, MESSAGE (a regex) on
+# stderr, and no file left behind.
+#
+#   workbook_scene_fails(<scene> <label> MESSAGE <regex> ARGS <arg>...)
+function(workbook_scene_fails scene label)
+  cmake_parse_arguments(R "" "MESSAGE" "ARGS" ${ARGN})
+  set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-fails-${label}")
+  set(args "")
+  foreach(a IN LISTS R_ARGS)
+    string(APPEND args "|${a}")
+  endforeach()
+  add_test(NAME "check fails: ${scene} ${label}"
+           COMMAND ${CMAKE_COMMAND} -DEXPECT=1 -DOUT=${out} "-DMESSAGE=${R_MESSAGE}"
+                   "-DCOMMAND=$<TARGET_FILE:${scene}>|--out|${out}${args}"
+                   -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
+  set_tests_properties("check fails: ${scene} ${label}" PROPERTIES LABELS "scene;bad-input" TIMEOUT 60)
 endfunction()
 
 # ------------------------------------------------------------------------------------------

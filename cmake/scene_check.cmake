@@ -1,8 +1,9 @@
 # Runs one scene and checks what it promised (used by the scene tests in CTest).
 #   -DCOMMAND=<exe>|<arg>|...   the command, '|'-separated
-#   -DEXPECT=0|2                the exit status it must give
+#   -DEXPECT=0|1|2              the exit status it must give
 #   -DOUT=<dir>                 its --out folder (emptied first)
-#   -DMESSAGE=<regex>           for EXPECT=2: stderr must match (it names the rule broken)
+#   -DMESSAGE=<regex>           for EXPECT=1 or 2: stderr must match (it names the rule broken,
+#                               or the check that failed)
 #   -DFIGURES=ON                for EXPECT=0: the JSON must list figures, and they must exist
 #   -DJSON=<file>               for EXPECT=0: where to keep the JSON report (the book's values)
 string(REPLACE "|" ";" command "${COMMAND}")
@@ -14,17 +15,17 @@ execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_
 if(NOT rc STREQUAL "${EXPECT}")
   message(FATAL_ERROR "exit status ${rc}, expected ${EXPECT}\n--- stdout:\n${out}\n--- stderr:\n${err}")
 endif()
-if(EXPECT STREQUAL "2")
+if(EXPECT STREQUAL "2" OR EXPECT STREQUAL "1")
   if(MESSAGE AND NOT err MATCHES "${MESSAGE}")
     message(FATAL_ERROR "the message does not name the problem (expected /${MESSAGE}/):\n${err}")
   endif()
   if(EXISTS "${OUT}")
     file(GLOB_RECURSE left LIST_DIRECTORIES false "${OUT}/*" "${OUT}/.*")
     if(left)
-      message(FATAL_ERROR "bad input left files behind: ${left}")
+      message(FATAL_ERROR "a scene that stopped left files behind: ${left}")
     endif()
   endif()
-  message(STATUS "rejected as it should: ${err}")
+  message(STATUS "stopped as it should: ${err}")
   return()
 endif()
 foreach(key error run_time_s error_measure)

@@ -44,6 +44,11 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g) { todo("grioli_
 // TODO: (Omega(0), R(0) = 1).
 BodyState grioli_initial_state(const GrioliPrecession& g) { todo("grioli_initial_state"); }
 
+// TODO: [P, (3.1), (3.2)] Euler's equations on the gaps: A Omega_dot_A = (B - C) Omega_B Omega_C + f [R^T k, z0]_A, ...
+BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, const Vec3& z0, const BodyState& s) {
+    todo("euler_poisson_rhs_gaps");
+}
+
 // TODO: [P, Item II] R_B along k, tilt by theta, turn about b until z(0) = +a, check the rule.
 LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& up, const Vec3& toward) {
     todo("place_item_II");
@@ -52,7 +57,7 @@ LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& 
 // TODO: R_A inside the right angle between z(0) and the projection of k.
 bool item_II_rule_holds(const Moments& m, const Mat3& R0, const Vec3& k) { todo("item_II_rule_holds"); }
 
-// TODO: integrate (3.1)-(3.2) with integrate_gsl and compare with grioli_rotation.
+// TODO: integrate (3.1)-(3.2) in the gap form with integrate_gsl and compare with grioli_rotation.
 PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, double periods, int samples_per_period,
                                  const OdeSettings& settings) {
     todo("integrate_grioli");

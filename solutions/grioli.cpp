@@ -115,6 +115,16 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g) {
 
 BodyState grioli_initial_state(const GrioliPrecession& g) { return {grioli_angular_velocity(g, 0.0), Mat3::Identity()}; }
 
+BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, const Vec3& z0, const BodyState& s) {
+    const Vec3& W = s.Omega;
+    const Vec3 torque = f * (s.R.transpose() * k).cross(z0);
+    const double B_minus_C = -m.C_minus_B, C_minus_A = m.B_minus_A + m.C_minus_B, A_minus_B = -m.B_minus_A;
+    const Vec3 W_dot((B_minus_C * W.y() * W.z() + torque.x()) / m.A,   //
+                     (C_minus_A * W.z() * W.x() + torque.y()) / m.B,   //
+                     (A_minus_B * W.x() * W.y() + torque.z()) / m.C);
+    return {W_dot, s.R * hat(W)};
+}
+
 LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& up, const Vec3& toward) {
     const GrioliPrecession g = grioli_precession(m, f, sense);
     const Vec3 k = require_axis(up, "vertical (up)");
@@ -165,7 +175,9 @@ PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, do
 
     PrecessionCheck c{0, 0, 0, 0, {}};
     Mat3 R_last = s0.R;
-    const OdeRhs rhs = [&top](double, const VecX& y) { return pack(euler_poisson_rhs(top, unpack(y))); };
+    const OdeRhs rhs = [&m, &g](double, const VecX& y) {
+        return pack(euler_poisson_rhs_gaps(m, g.f, g.k, g.z0, unpack(y)));
+    };
     const OdeJacobian jac = [&top](double, const VecX& y) { return euler_poisson_jacobian(top, unpack(y)); };
     c.stats = integrate_gsl(
         rhs, pack(s0), times,

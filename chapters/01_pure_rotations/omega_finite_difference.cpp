@@ -52,11 +52,11 @@ Vec3 omega_fd(const Vec3& a, double alpha, double t, double h, const Stencil& s)
 int main(int argc, char** argv) {
     kit::Options opts("omega_finite_difference",
                       "Chapter 1: Omega from finite differences of R(t), error against step and run time");
-    opts.vector("axis", Vec3(1, 2, 2), "rotation axis a (normalised)", kit::nonzero_vector())
-        .real("alpha", 1.3, "rotation frequency alpha", kit::positive())
-        .real("t", 0.7, "the instant at which Omega is recovered", kit::finite())
-        .real("hmin", 1e-12, "smallest step of the sweep", kit::positive())
-        .real("hmax", 0.3, "largest step of the sweep", kit::positive())
+    opts.vector("axis", Vec3(1, 2, 2), "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
+        .real("alpha", 1.3, "rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("t", 0.7, "the instant at which Omega is recovered (|alpha t| <= 10)", kit::between(-1e6, 1e6))
+        .real("hmin", 1e-12, "smallest step of the sweep", kit::between(1e-16, 1e3))
+        .real("hmax", 0.3, "largest step of the sweep", kit::between(1e-16, 1e3))
         .integer("points", 45, "steps in the sweep (log-spaced)", 5, 400);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
@@ -65,6 +65,13 @@ int main(int argc, char** argv) {
         const double hmin = o.real("hmin"), hmax = o.real("hmax");
         const int points = static_cast<int>(o.integer("points"));
         if (!(hmin < hmax)) throw kit::BadInput("--hmin must be smaller than --hmax");
+        // The stencil evaluates R at alpha (t + j h): far from t = 0 the sum t + j h keeps fewer
+        // of the digits of h (its round-off is eps |t| / h, not eps / (alpha h)), and the
+        // floors predicted below would be wrong.
+        if (!(std::abs(alpha * t) <= 10))
+            throw kit::BadInput("--t, --alpha: |alpha t| = " + std::to_string(std::abs(alpha * t)) +
+                                "; it must be at most 10 (further out t + h loses the digits of h)");
+        kit::require_budget(o, {double(points) * 30 + 5 * 2000 * 30, 2e-7, "rotations R(t)", "--points"});
         const Vec3 exact = alpha * a;   // [P, (1.2)]
         const double eps = std::numeric_limits<double>::epsilon();
 

@@ -32,15 +32,25 @@ Vec3 omega_from_rotations(const RegularPrecession& p, double t, double h) {
 
 int main(int argc, char** argv) {
     kit::Options opts("omega_circle", "Chapter 2: Omega(t) of a regular precession, its circle, and (1.6)-(1.7)");
-    opts.vector("a", Vec3(0, 0, 1), "rotation vector a (normalised)", kit::nonzero_vector())
-        .vector("b", Vec3(std::sqrt(3.0) / 2, 0, 0.5), "precession vector b (normalised)", kit::nonzero_vector())
-        .real("alpha", 2.0, "rotation frequency alpha", kit::positive())
-        .real("beta", 1.0, "precession frequency beta", kit::positive())
+    opts.vector("a", Vec3(0, 0, 1), "rotation vector a (normalised)", kit::nonzero_vector(-1e6, 1e6))
+        .vector("b", Vec3(std::sqrt(3.0) / 2, 0, 0.5), "precession vector b (normalised)", kit::nonzero_vector(-1e6, 1e6))
+        .real("alpha", 2.0, "rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta", 1.0, "precession frequency beta", kit::between(1e-6, 1e6))
         .integer("samples", 200, "instants sampled over one period 2 pi / alpha", 8, 100000);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const RegularPrecession p{o.vector("a").normalized(), o.real("alpha"), o.vector("b").normalized(), o.real("beta")};
         const int samples = static_cast<int>(o.integer("samples"));
+        // The differences of R are taken over h = 0.02 / (alpha + beta) at times up to 2 pi / alpha:
+        // for beta >> alpha the sum t + j h keeps only the leading digits of h (round-off
+        // eps t / h), and for beta << alpha the circle's radius beta |a x b| drowns in that noise.
+        if (!(p.beta <= 1e3 * p.alpha && p.beta >= 1e-3 * p.alpha))
+            throw kit::BadInput("--alpha, --beta: beta / alpha = " + std::to_string(p.beta / p.alpha) +
+                                "; it must be between 1e-3 and 1e3 (the finite differences of R lose their digits beyond)");
+        if (!(p.a.cross(p.b).norm() >= 1e-3))
+            throw kit::BadInput("--a, --b: the angle between a and b must be at least 1e-3 rad (the circle of Omega has radius "
+                                "beta |a x b|, and the fitted circle needs one)");
+        kit::require_budget(o, {double(samples) * 20 + 37 * 3 * 16, 2e-7, "rotations R(t)", "--samples"});
         const double period = 2 * std::numbers::pi / p.alpha;
         const double h = 0.02 / (p.alpha + p.beta);  // balanced for the eighth-order formula
 

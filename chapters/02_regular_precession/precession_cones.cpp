@@ -35,14 +35,14 @@ std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
 int main(int argc, char** argv) {
     kit::Options opts("precession_cones", "Chapter 2: space and body cones, and a body point's path, for three precessions");
     opts.real("angle1", 90, "case 1: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha1", 1.0, "case 1: rotation frequency alpha", kit::positive())
-        .real("beta1", 1.0, "case 1: precession frequency beta", kit::positive())
+        .real("alpha1", 1.0, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta1", 1.0, "case 1: precession frequency beta", kit::between(1e-6, 1e6))
         .real("angle2", 35, "case 2: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha2", 2.0, "case 2: rotation frequency alpha", kit::positive())
-        .real("beta2", 0.7, "case 2: precession frequency beta", kit::positive())
+        .real("alpha2", 2.0, "case 2: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta2", 0.7, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
         .real("angle3", 125, "case 3: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha3", 0.6, "case 3: rotation frequency alpha", kit::positive())
-        .real("beta3", 1.5, "case 3: precession frequency beta", kit::positive());
+        .real("alpha3", 0.6, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta3", 1.5, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 b = Vec3::UnitZ();
@@ -51,6 +51,13 @@ int main(int argc, char** argv) {
             const double th = o.real("angle" + std::to_string(c)) * std::numbers::pi / 180;
             cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), o.real("alpha" + std::to_string(c)), b,
                              o.real("beta" + std::to_string(c))});
+            // omega is checked by differences of R over h = 0.02 / (alpha + beta) at times up to
+            // 2 pi / beta: for alpha >> beta the sum t + j h keeps only the leading digits of h.
+            const double ratio = cases.back().alpha / cases.back().beta;
+            if (!(ratio <= 1e3 && ratio >= 1e-3))
+                throw kit::BadInput("--alpha" + std::to_string(c) + ", --beta" + std::to_string(c) + ": alpha / beta = " +
+                                    std::to_string(ratio) + "; it must be between 1e-3 and 1e3 (the finite differences of R "
+                                    "lose their digits beyond)");
         }
         double err = 0, run_time = 0;
         std::vector<std::vector<double>> summary;

@@ -46,12 +46,13 @@ std::string short_number(double x) {
 
 int main(int argc, char** argv) {
     kit::Options opts("dzhanibekov", "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
-    opts.vector("I", Vec3(3, 4, 6), "principal moments (distinct; the middle one is the unstable axis)")
-        .real("spin", 10, "Omega about the middle axis", kit::positive())
-        .real("delta", 1e-3, "perturbation of the other two components", kit::positive())
-        .real("T", 20, "time span", kit::positive())
-        .real("h", 2e-3, "step of the student's RK4", kit::positive())
-        .real("tol", 1e-12, "rk8pd tolerance", kit::positive());
+    opts.vector("I", Vec3(3, 4, 6), "principal moments (distinct; the middle one is the unstable axis)",
+                kit::components_between(1e-3, 1e3))
+        .real("spin", 10, "Omega about the middle axis", kit::between(1e-3, 1e3))
+        .real("delta", 1e-3, "perturbation of the other two components (at most spin / 10)", kit::between(1e-9, 1e3))
+        .real("T", 20, "time span", kit::between(1e-3, 1e6))
+        .real("h", 2e-3, "step of the student's RK4 (at most T / 10)", kit::between(1e-9, 1e3))
+        .real("tol", 1e-12, "rk8pd tolerance", kit::between(1e-14, 1e-3));
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I");
@@ -60,6 +61,18 @@ int main(int argc, char** argv) {
         if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct");
         const double spin = o.real("spin"), delta = o.real("delta"), T = o.real("T"), h = o.real("h"), tol = o.real("tol");
         if (h > 0.1 * T) throw kit::BadInput("--h must be at most T / 10");
+        // A flip about the middle axis needs a small perturbation: with delta near the spin the
+        // motion is no longer near the separatrix, and the figure's labels would not hold.
+        if (!(delta <= 0.1 * spin))
+            throw kit::BadInput("--delta: got " + short_number(delta) + "; it must be at most spin / 10 = " +
+                                short_number(0.1 * spin) + " (--spin), to stay near the separatrix");
+        // The work: the student's RK4 (3 timed runs of T / h steps), rk8pd (3 timed runs, about
+        // steps_per_radian radians of the spin's phase each), and the approach table (six rk8pd
+        // runs at tolerance 1e-14 over at most T).
+        const double phase = spin * T, rk8pd_steps_per_radian = 0.25 * std::pow(1e-12 / tol, 1.0 / 8);
+        kit::require_budget(o, {3 * T / h, 1e-6, "RK4 steps", "--T, --h"});
+        kit::require_budget(o, {3 * phase * rk8pd_steps_per_radian + 6 * phase * 0.4, 4e-6, "rk8pd steps",
+                                "--T, --spin, --tol"});
         auto start = [&](double d, double ratio_hi) {
             Vec3 w = Vec3::Zero();
             w(mid) = spin;
@@ -98,6 +111,20 @@ int main(int argc, char** argv) {
         scene.report.add("rk4_error", e4, "the student's RK4 at step h, same measure");
         scene.report.add("rk4_run_time_s", t4);
         scene.report.add("separatrix_m_c", sep.m_c, "the separatrix motion: m_c must be 0");
+        // The label "separatrix: one flip only" must hold on [0, T]. Started from rounded numbers,
+        // the separatrix motion has m_c of order eps^2, not 0: a period of about
+        // 4 ln(4 / sqrt(m_c)) / lambda, after which it flips again.
+        int flips = 0;
+        for (std::size_t k = 1; k < comps.size(); ++k)
+            if ((comps[k][4] > 0) != (comps[k - 1][4] > 0)) ++flips;
+        if (!(sep.m_c <= 1e-12))
+            throw kit::CheckFailed("the separatrix motion has m_c = " + short_number(sep.m_c) + "; it must be 0 (to 1e-12)");
+        if (flips > 1)
+            throw kit::CheckFailed("the curve labelled 'separatrix: one flip only' flips " + std::to_string(flips) +
+                                   " times in [0, T]: its start, rounded to double, has m_c = " + short_number(sep.m_c) +
+                                   " instead of 0, hence a period of " + short_number(sep.period) +
+                                   "; take --T below about " + short_number(0.75 * sep.period));
+        scene.report.add("separatrix_flips", static_cast<long>(flips), "sign changes of its middle component in [0, T]");
 
         // 2. Ever closer to the separatrix.
         std::vector<std::vector<double>> table;

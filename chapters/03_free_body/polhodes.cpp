@@ -21,12 +21,12 @@ using rigid::Vec3;
 
 int main(int argc, char** argv) {
     kit::Options opts("polhodes", "Chapter 3: polhodes on the energy ellipsoid, integrated and exact");
-    opts.vector("I", Vec3(2, 3, 4), "principal moments I1,I2,I3 (> 0, triangle inequality)")
-        .real("energy", 0.5, "kinetic energy E of every curve", kit::positive())
+    opts.vector("I", Vec3(2, 3, 4), "principal moments I1,I2,I3 (triangle inequality)", kit::components_between(1e-3, 1e3))
+        .real("energy", 0.5, "kinetic energy E of every curve", kit::between(1e-6, 1e6))
         .integer("curves", 4, "polhodes on each side of the separatrix", 1, 20)
         .choice("method", "rk8pd", {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams"},
                 "GSL method for the integrations (rk4 here is GSL's; the student's RK4 is in the other scenes)")
-        .real("tol", 1e-12, "GSL tolerance (relative and absolute)", kit::positive())
+        .real("tol", 1e-12, "GSL tolerance (relative and absolute)", kit::between(1e-14, 1e-3))
         .integer("samples", 200, "output times per period", 10, 100000);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
         const double E = o.real("energy"), tol = o.real("tol");
         const int curves = static_cast<int>(o.integer("curves")), samples = static_cast<int>(o.integer("samples"));
         const std::string method = o.choice("method");
+        // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
+        // separatrix), 3 timed runs, at the method's steps per radian for this tolerance.
+        kit::require_budget(o, {2.0 * curves * 3 * 12 * scene3::steps_per_radian(method, tol) + 6.0 * curves * samples,
+                                1.5e-6, "steps", "--curves, --tol, --method, --samples"});
 
         // D = M^2 / 2E on both sides of I_mid, evenly in the fraction of the way to the axis.
         std::vector<double> Ds;

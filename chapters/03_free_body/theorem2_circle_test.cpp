@@ -50,10 +50,10 @@ Residuals polhode_residuals(const rigid::FreeBodyMotion& motion, double t0, doub
 
 int main(int argc, char** argv) {
     kit::Options opts("theorem2_circle_test", "Chapter 3: Theorem 2 measured: is a free polhode ever a plane circle?");
-    opts.vector("I", Vec3(2, 3, 4), "principal moments I1,I2,I3 of the asymmetric body")
-        .real("energy", 0.5, "kinetic energy E of every motion", kit::positive())
+    opts.vector("I", Vec3(2, 3, 4), "principal moments I1,I2,I3 of the asymmetric body", kit::components_between(1e-3, 1e3))
+        .real("energy", 0.5, "kinetic energy E of every motion", kit::between(1e-6, 1e6))
         .integer("samples", 400, "instants per period fitted", 16, 100000)
-        .real("tol", 1e-12, "rk8pd tolerance for the check of the exact motion", kit::positive());
+        .real("tol", 1e-12, "rk8pd tolerance for the check of the exact motion", kit::between(1e-14, 1e-3));
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I");
@@ -62,6 +62,11 @@ int main(int argc, char** argv) {
         if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct (an asymmetric body)");
         const double E = o.real("energy"), tol = o.real("tol");
         const int n = static_cast<int>(o.integer("samples"));
+        // The work: about 60 motions sampled n times per period, and 5 rk8pd checks of at most
+        // 20 time units (3 timed runs each) at |Omega| = sqrt(2 E / I_lo) at most.
+        const double omega = std::sqrt(2 * E / I(lo));
+        kit::require_budget(o, {60.0 * n * 20 + 5 * 3 * std::min(20 * omega, 400.0) * scene3::steps_per_radian("rk8pd", tol) * 13,
+                                1.5e-7, "evaluations", "--samples, --tol, --energy"});
 
         // Fractions f of the way from the separatrix (f -> 0) to an axis (f -> 1), both sides.
         std::vector<double> fractions;

@@ -82,8 +82,8 @@ std::vector<Vec3> fourier_fit(F v, double alpha, double beta, int N) {
 int main(int argc, char** argv) {
     kit::Options opts("heavy_top_series", "Chapter 4: the series (3.5)-(3.6) for E and T against a numerical Fourier decomposition");
     opts.real("b3", 0.37, "third component of the precession vector b = (0, b2, b3), [P, (3.3)]", kit::between(-0.99, 0.99))
-        .real("k-angle", 0.8, "direction of k = (0, cos, sin) in the plane of a and b (radians)", kit::finite())
-        .vector("z0", Vec3(0.3, -0.5, 0.8), "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector())
+        .real("k-angle", 0.8, "direction of k = (0, cos, sin) in the plane of a and b (radians)", kit::between(-10, 10))
+        .vector("z0", Vec3(0.3, -0.5, 0.8), "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector(-1e3, 1e3))
         .integer("samples", 64, "samples N over the period 2 pi (at least 2 * 8 + 1 = 17 resolve every frequency)", 32, 4096);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {

@@ -51,9 +51,9 @@ Lemma1Frame to_lemma1_frame(const rigid::PrecessionFit& fit) {
 
 int main(int argc, char** argv) {
     kit::Options opts("lemma1_cases", "Chapter 4: Lemma 1 and Cases 1-3, by a search for regular precessions");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O", kit::positive())
+    opts.real("A", 1.0, "smallest principal moment at O", kit::between(1e-6, 1e6))
+        .real("B", 1.5, "intermediate principal moment at O", kit::between(1e-6, 1e6))
+        .real("C", 2.2, "largest principal moment at O", kit::between(1e-6, 1e6))
         .integer("restarts", 8, "random starts of the simplex per search", 1, 200)
         .integer("seed", 1, "seed of the random starts", 0, 1000000);
 
@@ -62,10 +62,14 @@ int main(int argc, char** argv) {
         if (!(moments(0) < moments(1) && moments(1) < moments(2)))
             throw kit::BadInput("--A, --B, --C: need A < B < C (an asymmetric body), got " + std::to_string(moments(0)) + ", " +
                                 std::to_string(moments(1)) + ", " + std::to_string(moments(2)));
+        if (!(moments(2) <= moments(0) + moments(1)))
+            throw kit::BadInput("--A, --B, --C: need the triangle inequality A + B >= C (a real body)");
         const int restarts = static_cast<int>(o.integer("restarts"));
         const unsigned seed = static_cast<unsigned>(o.integer("seed"));
         const std::vector<double> ratios = {0.5, 1.0, std::sqrt(2.0), 2.0, 3.0};
         const std::vector<double> gammas_deg = {30, 60, 90, 120, 150};
+        // The work: 25 searches of `restarts` simplex runs each (a run stops early at a zero).
+        kit::require_budget(o, {25.0 * restarts, 0.03, "simplex runs", "--restarts"});
 
         std::vector<std::vector<double>> table;
         rigid::PrecessionFit zero{};

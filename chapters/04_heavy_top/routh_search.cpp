@@ -19,9 +19,9 @@ using std::numbers::pi;
 
 int main(int argc, char** argv) {
     kit::Options opts("routh_search", "Chapter 4: Routh's result, no regular precession of an asymmetric body about the vertical");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O (the symmetric twin has A = B)", kit::positive())
-        .real("C", 2.2, "largest principal moment at O", kit::positive())
+    opts.real("A", 1.0, "smallest principal moment at O", kit::between(1e-6, 1e6))
+        .real("B", 1.5, "intermediate principal moment at O (the symmetric twin has A = B)", kit::between(1e-6, 1e6))
+        .real("C", 2.2, "largest principal moment at O", kit::between(1e-6, 1e6))
         .integer("restarts", 6, "random starts per search for the asymmetric body (the symmetric twin gets four times as many; it stops at its first zero)", 1, 200)
         .integer("seed", 1, "seed of the random starts", 0, 1000000);
 
@@ -29,10 +29,15 @@ int main(int argc, char** argv) {
         const Vec3 asym(o.real("A"), o.real("B"), o.real("C")), sym(o.real("B"), o.real("B"), o.real("C"));
         if (!(asym(0) < asym(1) && asym(1) < asym(2)))
             throw kit::BadInput("--A, --B, --C: need A < B < C (an asymmetric body)");
+        if (!(asym(2) <= asym(0) + asym(1)))
+            throw kit::BadInput("--A, --B, --C: need the triangle inequality A + B >= C (a real body)");
         const int restarts = static_cast<int>(o.integer("restarts"));
         const unsigned seed = static_cast<unsigned>(o.integer("seed"));
         const std::vector<double> ratios = {0.5, 1.0, 2.0};
         const std::vector<double> gammas_deg = {5, 30, 60, 90, 120, 150, 175};
+        // The work: 21 searches of `restarts` simplex runs on the asymmetric body and 21 of
+        // 4 restarts on its symmetric twin (which stops at its first zero: about 3 runs, measured).
+        kit::require_budget(o, {21.0 * (restarts + 3), 0.03, "simplex runs", "--restarts"});
 
         // snippet: ch04_routh_grid
         std::vector<std::vector<double>> rows;  // gamma, then asym and sym residual per ratio

@@ -81,9 +81,11 @@ int main(int argc, char** argv) {
         .integer("restarts", 6, "random starts per search", 1, 200);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o, 1e3);
         const double f = o.real("f");
         const int restarts = static_cast<int>(o.integer("restarts"));
+        // The work: the simplex searches (`restarts` runs each) and a few short integrations.
+        kit::require_budget(o, {12.0 * restarts, 0.03, "simplex runs", "--restarts"});
         const Vec3 moments(m.A, m.B, m.C);
         const Mat3 J = moments.asDiagonal();
         const rigid::GrioliPrecession g = rigid::grioli_precession(m, f, rigid::Sense::ccw);

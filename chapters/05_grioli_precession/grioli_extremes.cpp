@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rigid/grioli.hpp"
+#include "common.hpp"
 #include "rigid/ode.hpp"
 #include "scene.hpp"
 
@@ -70,6 +71,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const double periods = double(o.integer("periods"));
+        kit::require_budget(o, {12 * periods, ch5::seconds_per_period("rk8pd", 1e-12), "periods (12 cases)", "--periods"});
         // C - A = 0.8 throughout the nearly symmetric cases; the flat ones have C - B = A.
         std::vector<Case> cases = {{1.0, 0.5, 0.7, 1.0}};
         for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, eps * 0.8, (1 - eps) * 0.8, 1.0});

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     ch5::moment_options(opts);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o, 1e3);
         const double f = o.real("f");
         rigid::LabPlacement p{};
         const double run_time = kit::min_time([&] { p = rigid::place_item_II(m, f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX()); });

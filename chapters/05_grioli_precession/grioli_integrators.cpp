@@ -22,13 +22,18 @@ int main(int argc, char** argv) {
         .integer("repeats", 3, "timing: the smallest of this many runs (runs over 0.05 s: one)", 1, 20);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o);
         const rigid::Sense sense = o.choice("sense") == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
         const rigid::GrioliPrecession g = rigid::grioli_precession(m, o.real("f"), sense);
         const double periods = double(o.integer("periods"));
         const int repeats = static_cast<int>(o.integer("repeats"));
         const std::vector<std::string> methods = {"rk8pd", "rkck", "rkf45", "msadams", "bsimp", "msbdf", "rk4imp"};
         const std::vector<double> tols = {1e-6, 1e-8, 1e-10, 1e-12};
+        double per_period = 0;  // every run of the table, `repeats` times when short
+        for (const std::string& method : methods)
+            for (double tol : tols)
+                if (!(method == "rk4imp" && tol < 1e-10)) per_period += ch5::seconds_per_period(method, tol);
+        kit::require_budget(o, {periods * repeats, per_period, "periods (every method and tolerance)", "--periods, --repeats"});
 
         std::vector<std::vector<double>> table;
         double head_err = 0, head_time = 0;

@@ -37,10 +37,12 @@ struct Paths {
 Paths paths(const rigid::Moments& m, double f, rigid::Sense sense, int samples) {
     const rigid::LabPlacement p = rigid::place_item_II(m, f, sense, Vec3::UnitZ(), Vec3::UnitX());
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, f, sense);
-    const rigid::HeavyTop top = rigid::grioli_top(m, g);  // in the inertia frame, R(0) = 1
     const double s = sense == rigid::Sense::ccw ? 1.0 : -1.0, T = 2 * pi / p.alpha;
     Paths out;
-    rigid::integrate_gsl([&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); },
+    // In the inertia frame, R(0) = 1: Euler's equations on the gaps (Chapter 6 says why).
+    rigid::integrate_gsl([&](double, const VecX& y) {
+                             return rigid::pack(rigid::euler_poisson_rhs_gaps(m, g.f, g.k, g.z0, rigid::unpack(y)));
+                         },
                          rigid::pack(rigid::grioli_initial_state(g)), rigid::linspace(0, T, samples),
                          [&](double t, const VecX& y) {
                              const Mat3 R_lab = p.R0 * rigid::unpack(y).R;  // body -> inertia frame at 0 -> lab
@@ -70,9 +72,10 @@ int main(int argc, char** argv) {
         .integer("samples", 240, "points per period", 16, 100000);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o);
         const double f = o.real("f");
         const int samples = static_cast<int>(o.integer("samples"));
+        kit::require_budget(o, {6.0 * samples, 2e-6, "output points", "--samples"});
         Paths ccw, cw;
         const double run_time = kit::min_time([&] {
             ccw = paths(m, f, rigid::Sense::ccw, samples);

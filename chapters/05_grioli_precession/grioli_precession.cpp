@@ -28,8 +28,11 @@ int main(int argc, char** argv) {
               kit::between(1e-15, 1e-2));
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+        kit::require_budget(o, {double(o.integer("periods")) * (o.integer("periods") <= 1000 ? 3 : 1),
+                                ch5::seconds_per_period(o.choice("method"), o.real("tol")) + double(o.integer("samples")) * 2e-6,
+                                "periods", "--periods, --samples, --method, --tol"});
         // snippet: ch05_contract
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o);
         const rigid::Sense sense = o.choice("sense") == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
         const rigid::GrioliPrecession g = rigid::grioli_precession(m, o.real("f"), sense);
         const long periods = o.integer("periods");

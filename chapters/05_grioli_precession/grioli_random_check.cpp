@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -77,6 +78,9 @@ int main(int argc, char** argv) {
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const int sets = static_cast<int>(o.integer("sets")), max_tries = static_cast<int>(o.integer("tries"));
         std::mt19937_64 rng(static_cast<unsigned>(o.integer("seed")));
+        // The work per set: a few random starts of the independent solve (about 3 on average; the
+        // watchdog stops a run whose sets all need `tries`) and 2 periods of rk8pd.
+        kit::require_budget(o, {double(sets), 3 * 6e-3 + 2 * ch5::seconds_per_period("rk8pd", 1e-12), "sets", "--sets"});
         std::uniform_real_distribution<double> U(0, 1);
         const std::size_t n = 48, np = 7;
         gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();

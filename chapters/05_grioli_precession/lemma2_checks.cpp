@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     ch5::moment_options(opts);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments m = ch5::moments(o, 1e3);
         const double f = o.real("f");
         const Vec3 I(m.A, m.B, m.C);
         const Mat3 J = I.asDiagonal();

@@ -18,10 +18,10 @@ using rigid::Vec3;
 
 // --Ag --Bg --Cg --mu, each a finite number > 0; the rules between them are checked by body().
 inline void body_options(kit::Options& o, double A_g = 1.0, double B_g = 2.0, double C_g = 2.5, double mu = 1.0) {
-    o.real("Ag", A_g, "smallest principal moment at the centre of mass, A_g", kit::positive())
-        .real("Bg", B_g, "intermediate principal moment at the centre of mass, B_g", kit::positive())
-        .real("Cg", C_g, "largest principal moment at the centre of mass, C_g", kit::positive())
-        .real("mu", mu, "total mass mu", kit::positive());
+    o.real("Ag", A_g, "smallest principal moment at the centre of mass, A_g", kit::between(1e-6, 1e6))
+        .real("Bg", B_g, "intermediate principal moment at the centre of mass, B_g", kit::between(1e-6, 1e6))
+        .real("Cg", C_g, "largest principal moment at the centre of mass, C_g", kit::between(1e-6, 1e6))
+        .real("mu", mu, "total mass mu", kit::between(1e-6, 1e6));
 }
 
 // The body of the options, or BadInput naming the options and the rule they break.

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
             return BodyAtG{s[1] + s[0], s[2] + s[0], s[2] + s[1], uniform(0.3, 3)};
         };
         const int cases = static_cast<int>(o.integer("cases"));
+        kit::require_budget(o, {double(cases), 2e-5, "cases (each every printed formula, in double and binary128)", "--cases"});
         const double eps = std::numeric_limits<double>::epsilon();
         double e52 = 0, e53 = 0, e54[3] = {0, 0, 0}, e510 = 0, e59[2] = {0, 0}, e511 = 0, e512 = 0, e512d = 0, e513 = 0,
                e58 = 0, e515 = 0;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -202,6 +203,10 @@ int main(int argc, char** argv) {
         const int nu = static_cast<int>(o.integer("nu")), nv = static_cast<int>(o.integer("nv"));
         const int periods = static_cast<int>(o.integer("periods"));
         const double tol = o.real("tol");
+        // The work: a monodromy matrix (13 equations over one period) per grid point, and 18
+        // perturbed runs over `periods` periods.
+        kit::require_budget(o, {13.0 * nu * nv + 18.0 * periods, ch5::seconds_per_period("rk8pd", tol), "periods of rk8pd",
+                                "--nu, --nv, --periods, --tol"});
 
         // (1) The map of the largest multiplier over the shapes.
         std::vector<std::vector<double>> map;  // u, v, growth per period, rotation number

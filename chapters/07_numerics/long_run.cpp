@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const long N = o.integer("steps");
+        // The work: eight methods over N steps of h = 1/16 (rk8pd over the same time).
+        kit::require_budget(o, {double(N), 1.2e-5, "steps (of each of the eight methods)", "--steps"});
         const double h = 1.0 / 16;
         const rigid::Moments m = rigid::moments(1, 1.5, 2);
         const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);

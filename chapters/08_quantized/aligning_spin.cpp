@@ -38,11 +38,11 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
 
 int main(int argc, char** argv) {
     kit::Options opts("aligning_spin", "Chapter 8: the spin equation (6.2) lines S up with B or against it");
-    opts.vector("B", Vec3(0.3, -0.4, 1.2), "the magnetic field B", kit::nonzero_vector())
-        .real("e_over_mc", 2.0, "e/mc (either sign: the sign of the charge)", kit::finite())
-        .real("beta", 0.5, "beta, the strength of the aligning term (0: plain precession)", kit::non_negative())
-        .real("S", 1.0, "the length of the spin |S|", kit::positive())
-        .real("T", 12, "time span", kit::positive())
+    opts.vector("B", Vec3(0.3, -0.4, 1.2), "the magnetic field B", kit::nonzero_vector(-1e3, 1e3))
+        .real("e_over_mc", 2.0, "e/mc (either sign: the sign of the charge)", kit::between(-1e3, 1e3))
+        .real("beta", 0.5, "beta, the strength of the aligning term (0: plain precession)", kit::between(0, 1e3))
+        .real("S", 1.0, "the length of the spin |S|", kit::between(1e-3, 1e3))
+        .real("T", 12, "time span", kit::between(1e-2, 1e6))
         .integer("outputs", 600, "output times", 10, 100000)
         .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
 
@@ -57,6 +57,11 @@ int main(int argc, char** argv) {
         auto start = [&](double deg) { return Vec3(s * (std::cos(deg * pi / 180) * b + std::sin(deg * pi / 180) * e1)); };
         const double omega_L = -field.e_over_mc * Bn;  // the precession rate about b
         const double period = omega_L != 0 ? 2 * pi / std::abs(omega_L) : T;
+        // The work: 12 starting angles, (6.2) `repeats` times and beta = 0 once, over T; the
+        // phase turned is (|omega_L| + beta |B| |S|) T radians a run.
+        kit::require_budget(o, {12.0 * (repeats + 1) * (std::abs(omega_L) + field.beta * Bn * s) * T + 200, 6e-5,
+                                "radians of phase", "--T, --B, --e_over_mc, --beta, --S, --repeats"});
+        kit::require_budget(o, {12.0 * (repeats + 1) * double(times.size()), 3e-6, "output times (all runs)", "--outputs, --repeats"});
 
         // The fan of initial angles, with (6.2) and with beta = 0.
         const std::vector<double> fan{5, 20, 40, 60, 80, 89, 91, 100, 120, 140, 160, 175};

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -52,17 +53,19 @@ double off_frequency_deviation(const rigid::Moments& m, double f, double lambda,
 
 int main(int argc, char** argv) {
     kit::Options opts("grioli_frequency", "Chapter 8: the Grioli frequency, fixed by the body and f, with two senses");
-    opts.real("A", 1.0, "smallest principal moment at O (the body of part (b))", kit::positive())
-        .real("B", 1.5, "intermediate principal moment at O", kit::positive())
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::positive())
-        .real("f", 1.0, "f = g L mu", kit::positive())
+    opts.real("A", 1.0, "smallest principal moment at O (the body of part (b))", kit::between(1e-6, 1e6))
+        .real("B", 1.5, "intermediate principal moment at O", kit::between(1e-6, 1e6))
+        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::between(1e-6, 1e6))
+        .real("f", 1.0, "f = g L mu", kit::between(1e-6, 1e6))
         .integer("grid", 200, "map resolution: grid points per side", 20, 2000)
         .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments body = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        const rigid::Moments body = ch5::moments(o);
         const double f = o.real("f");
         const int n = static_cast<int>(o.integer("grid"));
+        // The work: the map (grid^2 closed forms) and 15 bodies x 2 senses x 2 periods, `repeats` times.
+        kit::require_budget(o, {double(n) * n * 2e-7 + 60.0 * double(o.integer("repeats")) * 3e-4, 1, "seconds", "--grid, --repeats"});
 
         // (a) The map, and bodies across it integrated in both senses over two periods.
         std::vector<std::vector<double>> map;

@@ -20,7 +20,7 @@ using rigid::VecX;
 int main(int argc, char** argv) {
     kit::Options opts("level_oscillator", "Chapter 8: the oscillator (6.1) settling onto discrete energy levels");
     scene8::oscillator_options(opts, 0.5, 2.0);
-    opts.real("T", 200, "time span", kit::positive())
+    opts.real("T", 200, "time span", kit::between(1e-2, 1e6))
         .integer("outputs", 800, "output times", 10, 100000)
         .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
 
@@ -30,6 +30,11 @@ int main(int argc, char** argv) {
         const double T = o.real("T"), E0 = k.E0, w = osc.omega / std::sqrt(osc.m);
         const int repeats = static_cast<int>(o.integer("repeats"));
         const auto times = rigid::linspace(0, T, static_cast<int>(o.integer("outputs")));
+        // The work: the motion on a level and six between levels (`repeats` timed runs each), six
+        // averaged ones, over T; and 50 periods for the period. The phase turned sets the steps.
+        kit::require_budget(o, {(7.0 * repeats + 6) * T * w + 50 * 2 * std::numbers::pi, scene8::seconds_per_radian,
+                                "radians of phase", "--T, --omega, --m, --repeats"});
+        kit::require_budget(o, {(7.0 * repeats + 6) * double(times.size()), 4e-6, "output times (all runs)", "--outputs, --repeats"});
         const rigid::OdeSettings tight{.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12};
 
         // 1. On a level, (6.1) is m q'' + omega^2 q = 0: exact reference q0 cos(w t), w = omega / sqrt(m).
@@ -52,9 +57,9 @@ int main(int argc, char** argv) {
         scene.report.add("on_level_energy_drift", on_drift, "max |E(t) - 2 E0| / (2 E0) on the level");
         scene.report.add("error_if_frequency_were_omega", naive_err, "the same motion against q0 cos(omega t)");
 
-        // The period, from the zero crossings of q on a fine grid (linear interpolation).
+        // The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
         {
-            const auto fine = rigid::linspace(0, 100, 20000);
+            const auto fine = rigid::linspace(0, 50 * 2 * std::numbers::pi / w, 20000);
             std::vector<double> crossings;
             double tp = 0, qp = y_on(0);
             rigid::integrate_gsl(f, y_on, fine, [&](double t, const VecX& y) {

@@ -41,9 +41,9 @@ int main(int argc, char** argv) {
     kit::Options opts("level_transitions", "Chapter 8: the oscillator (6.1) dropping to lower levels when disturbed");
     scene8::oscillator_options(opts, 0.5, 2.0);
     opts.integer("start_level", 4, "the level n the kicked motions start on, E = n E0", 1, 50)
-        .real("epsilon", 3e-3, "the size of a kick: q' += epsilon * (a normal random number)", kit::positive())
-        .real("tau", 1.0, "the time between kicks", kit::positive())
-        .real("T", 600, "time span of the kicked motions", kit::positive())
+        .real("epsilon", 3e-3, "the size of a kick: q' += epsilon * (a normal random number)", kit::between(1e-9, 1))
+        .real("tau", 1.0, "the time between kicks", kit::between(1e-2, 1e3))
+        .real("T", 600, "time span of the kicked motions", kit::between(1e-2, 1e6))
         .integer("seeds", 3, "kicked motions (seeds 1, 2, ...)", 1, 20)
         .integer("repeats", 1, "timing repetitions (the minimum is kept)", 1, 50);
 
@@ -53,6 +53,22 @@ int main(int argc, char** argv) {
         const double E0 = k.E0, eps = o.real("epsilon"), tau = o.real("tau"), T = o.real("T");
         const int n_start = static_cast<int>(o.integer("start_level")), seeds = static_cast<int>(o.integer("seeds"));
         if (tau > T) throw kit::BadInput("--tau must be at most --T (got " + std::to_string(tau) + " > " + std::to_string(T) + ")");
+        // The work: seeds + 1 motions over T (`repeats` timed runs), restarted at every kick.
+        const double w = osc.omega / std::sqrt(osc.m);
+        kit::require_budget(o, {double(o.integer("repeats")) * (seeds + 1) * (T * w + 20 * T / tau), scene8::seconds_per_radian,
+                                "radians of phase (and restarts)", "--T, --tau, --seeds, --omega, --m"});
+        // Part (b) follows a motion from delta below a level until it has left it, for delta down
+        // to 1e-5 E0 (1e-10 E0 for p = 1): the averaged equation predicts how long that takes,
+        // about delta^(1 - p) / ((p - 1) c), which grows without bound with the power p.
+        double escape_span = 0;
+        for (double p : {k.power, 1.0}) {
+            rigid::LevelFriction kp = k;
+            kp.power = p;
+            for (int e = 1; e <= (p == 1 ? 10 : 5); ++e)
+                escape_span += 1.5 * scene8::averaged_escape_time(osc, kp, 2 * E0, std::pow(10.0, -e) * E0) + 30;
+        }
+        kit::require_budget(o, {escape_span * w + 400 * w, scene8::seconds_per_radian, "radians of phase (the escapes of part (b))",
+                                "--power, --kappa, --E0, --omega, --m"});
         const double E_start = n_start * E0;
         const rigid::OdeRhs g = scene8::with_work(osc, k);
         const int per_kick = std::max(2, static_cast<int>(std::ceil(tau / 0.5)));  // outputs between kicks

@@ -21,13 +21,13 @@ using rigid::VecX;
 int main(int argc, char** argv) {
     kit::Options opts("quantized_work_precision",
                       "Chapter 8: error against run time, student RK4 vs GSL rkf45 and rk8pd, on the exact motions");
-    opts.vector("B", Vec3(0.3, -0.4, 1.2), "the magnetic field B", kit::nonzero_vector())
-        .real("e_over_mc", 2.0, "e/mc (either sign)", kit::finite())
-        .real("beta", 0.5, "beta of the aligning spin (the plain precession has beta = 0)", kit::positive())
-        .vector("S0", Vec3(0.8, 0.5, 0.3), "the initial spin", kit::nonzero_vector());
+    opts.vector("B", Vec3(0.3, -0.4, 1.2), "the magnetic field B", kit::nonzero_vector(-1e3, 1e3))
+        .real("e_over_mc", 2.0, "e/mc (either sign)", kit::between(-1e3, 1e3))
+        .real("beta", 0.5, "beta of the aligning spin (the plain precession has beta = 0)", kit::between(1e-6, 1e3))
+        .vector("S0", Vec3(0.8, 0.5, 0.3), "the initial spin", kit::nonzero_vector(-1e3, 1e3));
     scene8::oscillator_options(opts, 0.5, 2.0);
     opts.integer("level", 2, "the level n the oscillator starts on, E = n E0", 1, 100)
-        .real("T", 20, "time span", kit::positive())
+        .real("T", 20, "time span", kit::between(1e-2, 1e6))
         .integer("outputs", 40, "output times where the error is measured", 1, 10000)
         .integer("repeats", 5, "timing repetitions (the minimum is kept)", 1, 50);
 
@@ -42,6 +42,13 @@ int main(int argc, char** argv) {
         const int repeats = static_cast<int>(o.integer("repeats"));
         const auto times = rigid::linspace(0, T, static_cast<int>(o.integer("outputs")));
         const VecX y_osc = scene8::at_energy(osc, E_on);
+        // The work, per problem (three) and repetition: RK4 at eight steps h (1885 T steps in
+        // all, 4 evaluations each) and rkf45, rk8pd at 21 tolerances (about 9000 evaluations per
+        // radian of the fastest phase: the spin's precession or the oscillator's).
+        const double rate = std::max({std::abs(aligning.e_over_mc) * aligning.B.norm() * (1 + aligning.beta * S0.norm()), w, 1.0});
+        // Every output time stops the adaptive methods too: at least 21 x 15 evaluations each.
+        kit::require_budget(o, {3.0 * repeats * (1885 * T * 4 + 9000 * rate * T + 29 * 15 * double(times.size())), 1e-7,
+                                "evaluations", "--T, --repeats, --outputs, --B, --e_over_mc, --beta, --omega, --m"});
 
         // The three problems: right-hand side, initial state, error and invariant drift at output i.
         struct Problem {

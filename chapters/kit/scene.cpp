@@ -2,6 +2,9 @@
 #include "scene.hpp"
 
 #include <cerrno>
+#include <charconv>
+#include <condition_variable>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +23,13 @@ std::string number(double x) {
     std::ostringstream s;
     s << std::setprecision(17) << x;
     return s.str();
+}
+
+// The shortest text that reads back as exactly x (what --list-options gives the corner sweep).
+std::string shortest(double x) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
 }
 
 std::string short_number(double x) {
@@ -112,22 +122,26 @@ std::string text_value(const Value& v) {
 
 }  // namespace
 
-Rule finite() { return {"a finite number", [](double x) { return std::isfinite(x); }}; }
-Rule positive() { return {"a finite number > 0", [](double x) { return std::isfinite(x) && x > 0; }}; }
-Rule non_negative() { return {"a finite number >= 0", [](double x) { return std::isfinite(x) && x >= 0; }}; }
-Rule at_least(double lo) {
-    return {"a finite number >= " + short_number(lo), [lo](double x) { return std::isfinite(x) && x >= lo; }};
-}
 Rule between(double lo, double hi) {
-    return {"a number in [" + short_number(lo) + ", " + short_number(hi) + "]",
-            [lo, hi](double x) { return std::isfinite(x) && x >= lo && x <= hi; }};
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi))
+        throw std::logic_error("kit::between needs finite lo <= hi");
+    return {"a number in [" + short_number(lo) + ", " + short_number(hi) + "]", lo, hi};
 }
-VecRule finite_vector() {
-    return {"three finite numbers x,y,z", [](const rigid::Vec3& v) { return v.allFinite(); }};
+bool VecRule::holds(const rigid::Vec3& v) const {
+    for (int i = 0; i < 3; ++i)
+        if (!(std::isfinite(v(i)) && v(i) >= lo && v(i) <= hi)) return false;
+    return !nonzero || v.stableNorm() > 0;
 }
-VecRule nonzero_vector() {
-    return {"three finite numbers x,y,z, not all zero",
-            [](const rigid::Vec3& v) { return v.allFinite() && v.stableNorm() > 0; }};
+VecRule components_between(double lo, double hi) {
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi))
+        throw std::logic_error("kit::components_between needs finite lo <= hi");
+    return {"three numbers x,y,z, each in [" + short_number(lo) + ", " + short_number(hi) + "]", lo, hi, false};
+}
+VecRule nonzero_vector(double lo, double hi) {
+    VecRule r = components_between(lo, hi);
+    r.text += ", not all zero";
+    r.nonzero = true;
+    return r;
 }
 
 // ---------------------------------------------------------------------------- Options
@@ -154,6 +168,9 @@ Options& Options::real(const std::string& name, double fallback, const std::stri
     s.rule_text = rule.text;
     s.shown_default = short_number(fallback);
     reals_[name] = fallback;
+    s.lo = rule.lo;
+    s.hi = rule.hi;
+    if (!rule.holds(fallback)) throw std::logic_error("option --" + name + ": its default is outside its range");
     s.set = [this, name, rule](const std::string& word) {
         const double x = parse_real(name, word);
         if (!rule.holds(x)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
@@ -168,6 +185,9 @@ Options& Options::integer(const std::string& name, long fallback, const std::str
     s.help = help;
     s.rule_text = "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
     s.shown_default = std::to_string(fallback);
+    s.lo = static_cast<double>(min);
+    s.hi = static_cast<double>(max);
+    if (fallback < min || fallback > max) throw std::logic_error("option --" + name + ": its default is outside its range");
     integers_[name] = fallback;
     s.set = [this, name, min, max, rule_text = s.rule_text](const std::string& word) {
         char* end = nullptr;
@@ -186,6 +206,9 @@ Options& Options::vector(const std::string& name, const rigid::Vec3& fallback, c
     s.help = help;
     s.rule_text = rule.text;
     s.shown_default = short_number(fallback.x()) + "," + short_number(fallback.y()) + "," + short_number(fallback.z());
+    s.lo = rule.lo;
+    s.hi = rule.hi;
+    if (!rule.holds(fallback)) throw std::logic_error("option --" + name + ": its default is outside its range");
     vectors_[name] = fallback;
     s.set = [this, name, rule](const std::string& word) {
         rigid::Vec3 v;
@@ -240,6 +263,10 @@ bool Options::parse(int argc, char** argv) {
             figures_ = false;
             continue;
         }
+        if (arg == "--list-options") {
+            print_option_list(std::cout);
+            return false;
+        }
         if (arg.rfind("--", 0) != 0) throw BadInput("unexpected argument '" + arg + "' (options start with --; see --help)");
         std::string name = arg.substr(2), value;
         bool has_value = false;
@@ -249,16 +276,21 @@ bool Options::parse(int argc, char** argv) {
             has_value = true;
         }
         const Spec* spec = find(name);
-        if (name != "out" && !spec) throw BadInput("unknown option --" + name + " (see --help)");
+        if (name != "out" && name != "budget" && !spec) throw BadInput("unknown option --" + name + " (see --help)");
         if (!has_value) {
             // A value may itself start with '-' (a negative number), but never with "--".
             if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
-                throw BadInput("--" + name + ": needs a value" + (spec ? " (" + spec->rule_text + ")" : " (a folder)"));
+                throw BadInput("--" + name + ": needs a value" +
+                               (spec ? " (" + spec->rule_text + ")" : name == "out" ? " (a folder)" : " (seconds)"));
             value = argv[++i];
         }
         if (name == "out") {
             if (value.empty()) throw BadInput("--out: needs a folder name");
             out_dir_ = value;
+        } else if (name == "budget") {
+            const double b = parse_real(name, value);
+            if (!(b >= 1 && b <= 86400)) throw BadInput("--budget: got " + value + "; it must be a number of seconds in [1, 86400]");
+            budget_s_ = b;
         } else {
             spec->set(value);
         }
@@ -280,8 +312,52 @@ void Options::print_help(std::ostream& os) const {
     os << "  --out DIR      folder for the figures (default: the current folder)\n"
           "  --no-figure    compute and report, draw nothing\n"
           "  --json         print the results as one JSON object on stdout\n"
+          "  --budget S     the run time allowed, in seconds (default " << short_number(default_budget_s)
+       << ", about a minute on one core):\n"
+          "                 a request whose estimated work is over it is refused (exit status 2)\n"
+          "  --list-options every option with its default and accepted range, as JSON\n"
           "  --help         this text\n\n"
-          "Exit status: 0 success; 2 bad input; 1 numerical failure or an exercise not written yet.\n";
+          "Exit status: 0 success; 2 bad input or a request over the budget; 1 numerical failure, a failed\n"
+          "check, or an exercise not written yet.\n";
+}
+
+void Options::print_option_list(std::ostream& os) const {
+    os << "{\"scene\": " << json_string(scene_) << ", \"budget_s\": " << number(default_budget_s) << ", \"options\": [";
+    for (std::size_t i = 0; i < specs_.size(); ++i) {
+        const Spec& s = specs_[i];
+        os << (i ? ",\n  " : "\n  ") << "{\"name\": " << json_string(s.name) << ", \"kind\": " << json_string(s.kind)
+           << ", \"default\": " << json_string(s.shown_default);
+        if (s.kind == "word") {
+            os << ", \"choices\": [";
+            for (std::size_t c = 0; c < s.choices.size(); ++c) os << (c ? ", " : "") << json_string(s.choices[c]);
+            os << "]";
+        } else {
+            // The bounds as the option reads them back: whole numbers for an integer option.
+            const auto text = [&](double x) {
+                return s.kind == "integer" ? std::to_string(static_cast<long>(x)) : shortest(x);
+            };
+            os << ", \"min\": " << shortest(s.lo) << ", \"max\": " << shortest(s.hi) << ", \"min_text\": \"" << text(s.lo)
+               << "\", \"max_text\": \"" << text(s.hi) << "\"";
+        }
+        os << "}";
+    }
+    os << "\n]}\n";
+}
+
+namespace {
+double estimated_s = 0;  // the sum of this run's estimates, reported with the scene's results
+}
+
+double require_budget(const Options& o, const Work& w) {
+    const double estimate = w.units * w.seconds_per_unit;
+    estimated_s += estimate;
+    if (!(estimate <= o.budget_s())) {
+        throw BadInput(w.options + ": this asks for about " + short_number(w.units) + " " + w.unit + ", about " +
+                       short_number(estimate) + " s of work; the budget is " + short_number(o.budget_s()) +
+                       " s, at most " + short_number(std::floor(o.budget_s() / w.seconds_per_unit)) + " " + w.unit +
+                       " (ask for less, or raise --budget)");
+    }
+    return estimate;
 }
 
 // ---------------------------------------------------------------------------- Report
@@ -360,9 +436,48 @@ void Report::write_json(std::ostream& os, const Options& opts, const std::vector
 
 // ---------------------------------------------------------------------------- Scene
 
-void Scene::stage_figure(const std::string& staged, const std::string& final_path) { staged_.emplace_back(staged, final_path); }
+namespace {
+
+// Stops a scene that runs past 3 budgets + 10 s: its estimate of its work was wrong, and a
+// scene must never hang. It discards the staged figures, says so on stderr and exits with 1.
+class Watchdog {
+public:
+    Watchdog(Scene& scene, std::string who, double budget_s)
+        : thread_([this, &scene, who = std::move(who), budget_s] {
+              const auto limit = std::chrono::duration<double>(3 * budget_s + 10);
+              std::unique_lock<std::mutex> lock(mutex_);
+              if (done_cv_.wait_for(lock, limit, [this] { return done_; })) return;
+              scene.discard_figures();
+              std::cerr << who << ": numerical failure: still running after " << short_number(limit.count())
+                        << " s, three times the budget of " << short_number(budget_s)
+                        << " s and more: its estimate of the work was wrong; stopped\n";
+              std::_Exit(1);
+          }) {}
+    ~Watchdog() {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            done_ = true;
+        }
+        done_cv_.notify_all();
+        thread_.join();
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable done_cv_;
+    bool done_ = false;
+    std::thread thread_;  // last: it starts after the members it uses
+};
+
+}  // namespace
+
+void Scene::stage_figure(const std::string& staged, const std::string& final_path) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    staged_.emplace_back(staged, final_path);
+}
 
 void Scene::publish_figures() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& [staged, final_path] : staged_) {
         std::filesystem::rename(staged, final_path);
         published_.push_back(final_path);
@@ -371,6 +486,7 @@ void Scene::publish_figures() {
 }
 
 void Scene::discard_figures() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& [staged, final_path] : staged_) {
         std::error_code ignored;
         std::filesystem::remove(staged, ignored);
@@ -387,6 +503,7 @@ int run(int argc, char** argv, Options& opts, const std::function<void(const Opt
         return 2;
     }
     Scene scene(opts);
+    const Watchdog watchdog(scene, who, opts.budget_s());
     try {
         const auto t0 = std::chrono::steady_clock::now();
         body(opts, scene);
@@ -396,6 +513,7 @@ int run(int argc, char** argv, Options& opts, const std::function<void(const Opt
         scene.publish_figures();
         if (opts.json()) {
             scene.report.add("wall_time_s", wall, "the whole scene, figures included");
+            scene.report.add("estimated_time_s", estimated_s, "the scene's own estimate of its work, checked against --budget");
             scene.report.write_json(std::cout, opts, scene.figures());
         } else {
             std::cout << who << ": " << opts.summary() << "\n";
@@ -418,6 +536,10 @@ int run(int argc, char** argv, Options& opts, const std::function<void(const Opt
     } catch (const NumericalFailure& e) {
         scene.discard_figures();
         std::cerr << who << ": numerical failure: " << e.what() << "\n";
+        return 1;
+    } catch (const CheckFailed& e) {
+        scene.discard_figures();
+        std::cerr << who << ": check failed: " << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {
         scene.discard_figures();

@@ -1,7 +1,10 @@
 // The scene kit: what every chapter driver ("scene") shares, and nothing else.
 //
-//   * named options with --help, the common --out DIR, --no-figure and --json;
+//   * named options with --help, the common --out DIR, --no-figure, --json and --budget, and
+//     --list-options (every option, its default and its accepted range, as JSON);
 //   * one clear message and exit status 2 for bad input, 1 for a numerical failure;
+//   * a time budget: a scene estimates its work before it starts and refuses a request over
+//     the budget (require_budget); a watchdog stops one that overruns it all the same;
 //   * a report that puts the scene's error next to its run time (text or JSON);
 //   * figures staged and published only when the whole scene succeeded (figure.hpp).
 //
@@ -9,7 +12,7 @@
 //
 //   int main(int argc, char** argv) {
 //       kit::Options opts("my_scene", "Chapter N: what it shows");
-//       opts.real("alpha", 1.0, "rotation frequency", kit::positive);
+//       opts.real("alpha", 1.0, "rotation frequency", kit::between(1e-6, 1e6));
 //       return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
 //           ...compute, scene.report.headline(...), kit::Figure fig(scene, "x.svg"); ...
 //       });
@@ -17,8 +20,10 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -40,33 +45,33 @@ struct NumericalFailure : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// A rule that a number must obey, with the words that --help and error messages use.
+// The range a number must lie in, lo <= x <= hi, both finite: every numeric option declares
+// what its scene can do, and --list-options gives it to the corner sweep of the test suite.
 struct Rule {
-    std::string text;                     // e.g. "a finite number > 0"
-    std::function<bool(double)> holds;
+    std::string text;                     // e.g. "a number in [1e-06, 1e+06]"
+    double lo, hi;
+    bool holds(double x) const { return std::isfinite(x) && x >= lo && x <= hi; }
 };
-Rule finite();
-Rule positive();
-Rule non_negative();
-Rule at_least(double lo);
-Rule between(double lo, double hi);       // lo <= x <= hi
+Rule between(double lo, double hi);
 
-// A rule for a 3-vector.
+// The same for a 3-vector: every component in [lo, hi]; with nonzero, not all of them zero.
 struct VecRule {
     std::string text;
-    std::function<bool(const rigid::Vec3&)> holds;
+    double lo, hi;
+    bool nonzero;
+    bool holds(const rigid::Vec3& v) const;
 };
-VecRule finite_vector();
-VecRule nonzero_vector();
+VecRule components_between(double lo, double hi);
+VecRule nonzero_vector(double lo, double hi);
 
 class Options {
 public:
     Options(std::string scene, std::string summary);
 
-    Options& real(const std::string& name, double fallback, const std::string& help, Rule rule = finite());
+    Options& real(const std::string& name, double fallback, const std::string& help, Rule rule);
     Options& integer(const std::string& name, long fallback, const std::string& help, long min, long max);
     Options& vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help,
-                    VecRule rule = finite_vector());
+                    VecRule rule);
     Options& choice(const std::string& name, const std::string& fallback,
                     const std::vector<std::string>& choices, const std::string& help);
 
@@ -83,7 +88,9 @@ public:
     const std::string& out_dir() const { return out_dir_; }
     bool figures() const { return figures_; }
     bool json() const { return json_; }
+    double budget_s() const { return budget_s_; }   // --budget SECONDS
     void print_help(std::ostream& os) const;
+    void print_option_list(std::ostream& os) const;   // --list-options: JSON
 
 private:
     struct Spec {
@@ -91,6 +98,7 @@ private:
         std::vector<std::string> choices;
         std::function<void(const std::string&)> set;   // parses and checks one value
         std::string shown_default;
+        double lo = 0, hi = 0;                         // the accepted range (numbers, integers, vectors)
     };
     Spec& add(const std::string& name);
     const Spec* find(const std::string& name) const;
@@ -103,7 +111,27 @@ private:
     std::map<std::string, std::string> choices_;
     std::string out_dir_ = ".";
     bool figures_ = true, json_ = false;
+    double budget_s_ = default_budget_s;
+
+public:
+    // About a minute on one core: what a scene may take unless --budget says otherwise.
+    static constexpr double default_budget_s = 60;
 };
+
+// The work a request asks for, estimated before the scene starts: `units` of work (steps,
+// samples, runs) at about `seconds_per_unit` each (measured on one core of the machine the
+// workbook was written on), `unit` names them and `options` the options that set their number.
+struct Work {
+    double units;
+    double seconds_per_unit;
+    std::string unit;     // "rk8pd steps"
+    std::string options;  // "--T, --h"
+};
+
+// Refuses (BadInput: exit status 2) a request whose estimated run time is over the budget,
+// with a message naming the options, the estimate, and the largest number of units allowed.
+// Returns the estimate in seconds.
+double require_budget(const Options& o, const Work& w);
 
 // One value in a report: a number, a count, a word, a 3-vector, or a list of numbers.
 using Value = std::variant<double, long, std::string, bool, rigid::Vec3, std::vector<double>>;
@@ -155,18 +183,27 @@ public:
     // Called by kit::Figure: a finished figure waits at `staged` until the scene succeeds.
     void stage_figure(const std::string& staged, const std::string& final_path);
     void publish_figures();   // renames staged files to their final names
-    void discard_figures();   // removes staged files (the scene failed)
+    void discard_figures();   // removes staged files (the scene failed, or overran its budget)
     const std::vector<std::string>& figures() const { return published_; }
 
 private:
     const Options& opts_;
     std::vector<std::pair<std::string, std::string>> staged_;
     std::vector<std::string> published_;
+    std::mutex mutex_;  // the watchdog may discard the staged figures from its own thread
+};
+
+// A scene's own check failed (a label that would be wrong, a property that does not hold):
+// exit status 1, and the message says which check and by how much.
+struct CheckFailed : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // Parses options, runs the body, prints the report, maps failures to exit statuses:
-// 0 success; 2 bad input (BadInput or std::invalid_argument); 1 numerical failure, an
-// exercise not written yet, or any other error. Never leaves a partial figure behind.
+// 0 success; 2 bad input (BadInput or std::invalid_argument, a request over the budget);
+// 1 numerical failure, a failed check, an exercise not written yet, or any other error.
+// Never leaves a partial figure behind. A watchdog stops a scene that runs past three times
+// its budget plus 10 s (its estimate was wrong): exit status 1, with a message.
 int run(int argc, char** argv, Options& opts, const std::function<void(const Options&, Scene&)>& body);
 
 // The smallest wall time of `repeats` calls of f, in seconds: the least-disturbed measurement.

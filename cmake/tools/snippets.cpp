@@ -290,7 +290,7 @@ int check_names(const fs::path& root) {
     const std::regex span(R"(`([^`]+)`)");
     const std::regex scene_cmd(R"(build/[^/ ]+/scenes/([A-Za-z0-9_]+)((?: +[^ ]+)*))");
     const std::regex grader_cmd(R"(build/[^/ ]+/graders/grade_([A-Za-z0-9_]+))");
-    const std::set<std::string> common_options = {"help", "json", "out", "no-figure"};
+    const std::set<std::string> common_options = {"help", "json", "out", "no-figure", "budget", "list-options"};
     int names = 0, commands = 0;
 
     for (const auto& p : tree.prose) {

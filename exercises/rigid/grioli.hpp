@@ -88,6 +88,20 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g);
 BodyState grioli_initial_state(const GrioliPrecession& g);
 // end snippet
 
+// snippet: grioli_gap_form
+// The Euler-Poisson equations (3.1)-(3.2) of a body with J = diag(A, B, C) (its inertia frame),
+// with Euler's equations written on the moment gaps                           [P, (3.1), (3.2)]
+//   A Omega_dot_A = (B - C) Omega_B Omega_C + f [R^T k, z(0)]_A
+//   B Omega_dot_B = (C - A) Omega_C Omega_A + f [R^T k, z(0)]_B
+//   C Omega_dot_C = (A - B) Omega_A Omega_B + f [R^T k, z(0)]_C,      R_dot = R hat(Omega),
+// where B - C = -(C - B), C - A = (B - A) + (C - B) and A - B = -(B - A) come from the gaps of m,
+// never from subtracting A, B, C. The same equations as euler_poisson_rhs with J = diag(A, B, C),
+// but they keep their digits when two moments agree to more digits than a double holds (far out
+// on a Grioli line C - B is 1e-9 of B, or less). f > 0, k and z0 unit vectors: not checked,
+// this runs millions of times.
+BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, const Vec3& z0, const BodyState& s);
+// end snippet
+
 // snippet: grioli_item_II
 // The body placed in a lab frame whose upward vertical is `up` (any finite non-zero vector),
 // by the recipe of Item II [P, Introduction], with its quadrant rule replaced by one that
@@ -119,9 +133,10 @@ bool item_II_rule_holds(const Moments& m, const Mat3& R0, const Vec3& k);
 // end snippet
 
 // snippet: grioli_integrate
-// Theorem 1 checked by integration: the Euler-Poisson equations (3.1)-(3.2) of grioli_top,
-// started from grioli_initial_state and integrated with integrate_gsl over `periods` periods
-// 2 pi / alpha, compared at `samples_per_period` points per period with grioli_rotation.
+// Theorem 1 checked by integration: the Euler-Poisson equations (3.1)-(3.2) of grioli_top in
+// their gap form (euler_poisson_rhs_gaps), started from grioli_initial_state and integrated
+// with integrate_gsl over `periods` periods 2 pi / alpha, compared at `samples_per_period`
+// points per period with grioli_rotation.
 struct PrecessionCheck {
     double max_rotation_error;  // max geodesic_angle(R_integrated, R_exact), radians
     double max_omega_error;     // max |Omega - Omega_exact| / alpha
@@ -130,7 +145,7 @@ struct PrecessionCheck {
     OdeStats stats;
 };
 
-// periods > 0, samples_per_period >= 1. Implicit methods get euler_poisson_jacobian.
+// periods > 0, samples_per_period >= 1. Implicit methods get euler_poisson_jacobian of grioli_top.
 PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, double periods,
                                  int samples_per_period, const OdeSettings& settings);
 // end snippet

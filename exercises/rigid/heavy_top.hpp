@@ -51,6 +51,34 @@ double heavy_top_energy(const HeavyTop& top, const BodyState& s);
 MatX euler_poisson_jacobian(const HeavyTop& top, const BodyState& s);
 // end snippet
 
+// snippet: heavy_top_in_place
+// The same right-hand side in the form GSL calls (OdeRhsInPlace, rigid/ode.hpp): in place on
+// the packed state y = (Omega, R row by row), with J^{-1} formed once, not a solve per call.
+// Provided, not an exercise: euler_poisson_rhs above is the one to read and to write; this
+// one is for speed, and Chapter 7 measures both and checks that they agree.
+class EulerPoissonInPlace {
+public:
+    explicit EulerPoissonInPlace(const HeavyTop& top)
+        : J_(top.J), J_inv_(top.J.inverse()), fk_(top.f * top.k), z0_(top.z0) {}
+
+    void operator()(double /*t*/, const double* y, double* dydt) const {
+        using Rows = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;  // R row by row, as packed
+        const Eigen::Map<const Vec3> W(y);
+        const Eigen::Map<const Rows> R(y + 3);
+        Eigen::Map<Vec3> W_dot(dydt);
+        Eigen::Map<Rows> R_dot(dydt + 3);
+        // J Omega_dot = [J Omega, Omega] + f [R^T k, z(0)]
+        W_dot = J_inv_ * ((J_ * W).cross(W) + (R.transpose() * fk_).cross(z0_));
+        // R_dot = R hat(Omega): row i of R_dot is (row i of R) x Omega
+        for (int i = 0; i < 3; ++i) R_dot.row(i) = R.row(i).cross(W.transpose());
+    }
+
+private:
+    Mat3 J_, J_inv_;
+    Vec3 fk_, z0_;
+};
+// end snippet
+
 // snippet: heavy_top_trial
 // A trial regular precession R(t) = R^b(beta t) R^a(alpha t) [P, (1.4)]: axes a and b
 // (normalised by the functions that take one), frequencies alpha and beta ([P] takes them

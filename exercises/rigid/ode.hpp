@@ -24,6 +24,9 @@ using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
 
 using OdeRhs = std::function<VecX(double t, const VecX& y)>;       // f(t, y)
+// The same in place, as GSL itself calls a right-hand side: dydt = f(t, y) written into dydt,
+// y and dydt of the state's size, no allocation (Chapter 7 measures what that saves).
+using OdeRhsInPlace = std::function<void(double t, const double* y, double* dydt)>;
 using OdeJacobian = std::function<MatX(double t, const VecX& y)>;  // df/dy, n x n
 using OdeObserver = std::function<void(double t, const VecX& y)>;
 
@@ -33,6 +36,11 @@ struct OdeSettings {
     double abs_tol = 1e-12;
     double first_step = 1e-3;
     long max_steps = 0;  // per output interval; 0 = no limit
+    // Explicit Runge-Kutta methods only: our own loop around gsl_odeiv2_step_apply and
+    // gsl_odeiv2_control_hadjust (the steps and step sizes of GSL's driver), with the time kept
+    // as an exact two-part sum t = t_hi + t_lo, so that the steps add up without rounding and
+    // each output time is reached after exactly that much time (Chapter 7).
+    bool compensated_time = false;
 };
 
 struct OdeStats {
@@ -53,6 +61,16 @@ bool gsl_method_needs_jacobian(const std::string& method);
 OdeStats integrate_gsl(const OdeRhs& f, const VecX& y0, const std::vector<double>& times,
                        const OdeObserver& observe, const OdeSettings& settings = {},
                        const OdeJacobian& jacobian = {});
+// The same with a right-hand side in place.
+OdeStats integrate_gsl(const OdeRhsInPlace& f, const VecX& y0, const std::vector<double>& times,
+                       const OdeObserver& observe, const OdeSettings& settings = {},
+                       const OdeJacobian& jacobian = {});
+
+// The run time, in seconds, of `calls` evaluations of f at states near y, each made through
+// the very function that integrate_gsl hands GSL (for an OdeRhs: the call, a new VecX, a copy
+// into GSL's array). For benchmarks of a right-hand side (Chapter 7). Returns the last dy/dt.
+double time_gsl_calls(const OdeRhs& f, const VecX& y, long calls, VecX* last = nullptr);
+double time_gsl_calls(const OdeRhsInPlace& f, const VecX& y, long calls, VecX* last = nullptr);
 
 // n + 1 equally spaced times from t0 to t1 (n >= 1), ending exactly at t1.
 std::vector<double> linspace(double t0, double t1, int n);
