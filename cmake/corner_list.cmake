@@ -1,7 +1,8 @@
 # Lists the corner tests of one scene (run after the scene is built): the scene's own
 # --list-options gives every numeric option with its accepted range; each option is tried at
 # its smallest and its largest value, one at a time, the others at their defaults (or at the
-# scene's lighter SMOKE_ARGS). Writes add_test() lines for CTest to include.
+# scene's lighter SMOKE_ARGS). Writes add_test() lines for CTest to include, and one more: a
+# typo'd option, which the scene must refuse at the start, naming the options it has.
 #   -DSCENE=<exe> -DNAME=<scene> -DCHAPTER=<NN_slug> -DBASE=<arg>|<arg>... -DBUDGET=<seconds>
 #   -DOUT=<file.cmake> -DWORK=<folder> -DCHECK=<corner_check.cmake>
 execute_process(COMMAND "${SCENE}" --list-options RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
@@ -32,4 +33,32 @@ if(n GREATER 0)
     endforeach()
   endforeach()
 endif()
+
+# A typo: an option the scene does not have (--Bg, a Chapter 6 option, or --Bgx on a scene that
+# has --Bg) must stop it at the start with exit status 2 and a message naming the options it has:
+# its first and its last own option, and the kit's --help at the end of the list.
+set(typo "Bg")
+set(first "")
+set(own_last "")
+if(n GREATER 0)
+  string(JSON first GET "${json}" options 0 name)
+  string(JSON own_last GET "${json}" options ${last} name)
+  foreach(i RANGE ${last})
+    string(JSON opt GET "${json}" options ${i} name)
+    if(opt STREQUAL "Bg")
+      set(typo "Bgx")
+    endif()
+  endforeach()
+endif()
+set(message "unknown option --${typo}.*takes ")
+if(first)
+  string(APPEND message "--${first}, .*--${own_last}, ")
+endif()
+string(APPEND message ".*--help")
+get_filename_component(kit_dir "${CHECK}" DIRECTORY)
+set(test "typo: ${NAME} --${typo}")
+string(APPEND lines
+  "add_test(\"${test}\" \"${CMAKE_COMMAND}\" -DEXPECT=2 \"-DMESSAGE=${message}\" -DOUT=${WORK}/${NAME}-typo "
+  "\"-DCOMMAND=${SCENE}|--no-figure|--out|${WORK}/${NAME}-typo${BASE}|--${typo}|1\" -P \"${kit_dir}/scene_check.cmake\")\n"
+  "set_tests_properties(\"${test}\" PROPERTIES LABELS \"scene;bad-input;${CHAPTER}\" TIMEOUT 60)\n")
 file(WRITE "${OUT}" "${lines}")

@@ -1,17 +1,19 @@
 // The scene kit: options, report, run. See scene.hpp.
 #include "scene.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 #include <cerrno>
-#include <charconv>
-#include <condition_variable>
-#include <thread>
 #include <cmath>
-#include <cstdio>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "rigid/todo.hpp"
 
@@ -19,24 +21,15 @@ namespace kit {
 
 namespace {
 
-std::string number(double x) {
-    std::ostringstream s;
-    s << std::setprecision(17) << x;
-    return s.str();
-}
+using Json = nlohmann::ordered_json;  // keeps the fields in the order the scene gave them
+
+// Every number the kit prints: 17 significant digits in messages that must be exact, 6 in
+// the text report, help and rules.
+std::string number(double x) { return fmt::format("{:.17g}", x); }
+std::string short_number(double x) { return fmt::format("{:.6g}", x); }
 
 // The shortest text that reads back as exactly x (what --list-options gives the corner sweep).
-std::string shortest(double x) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
-
-std::string short_number(double x) {
-    std::ostringstream s;
-    s << std::setprecision(6) << x;
-    return s.str();
-}
+std::string shortest(double x) { return fmt::format("{}", x); }
 
 // strtod over the whole word, or BadInput naming the option.
 double parse_real(const std::string& name, const std::string& word) {
@@ -44,54 +37,20 @@ double parse_real(const std::string& name, const std::string& word) {
     char* end = nullptr;
     errno = 0;
     const double x = std::strtod(word.c_str(), &end);
-    if (end == word.c_str() || *end != '\0')
-        throw BadInput("--" + name + ": '" + word + "' is not a number");
+    if (end == word.c_str() || *end != '\0') throw BadInput("--" + name + ": '" + word + "' is not a number");
     return x;
 }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
-
-// JSON has no NaN or infinity: they become null, and the report's headline check
-// has already refused a non-finite headline error.
-std::string json_number(double x) { return std::isfinite(x) ? number(x) : "null"; }
-
-std::string json_value(const Value& v) {
+// JSON has no NaN or infinity: nlohmann::json writes them as null, and the report's headline
+// check has already refused a non-finite headline error.
+Json json_value(const Value& v) {
     return std::visit(
-        [](const auto& x) -> std::string {
+        [](const auto& x) -> Json {
             using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return json_number(x);
-            } else if constexpr (std::is_same_v<T, long>) {
-                return std::to_string(x);
-            } else if constexpr (std::is_same_v<T, std::string>) {
-                return json_string(x);
-            } else if constexpr (std::is_same_v<T, bool>) {
-                return x ? "true" : "false";
-            } else if constexpr (std::is_same_v<T, rigid::Vec3>) {
-                return "[" + json_number(x.x()) + ", " + json_number(x.y()) + ", " + json_number(x.z()) + "]";
+            if constexpr (std::is_same_v<T, rigid::Vec3>) {
+                return Json::array({x.x(), x.y(), x.z()});
             } else {
-                std::string out = "[";
-                for (std::size_t i = 0; i < x.size(); ++i) out += (i ? ", " : "") + json_number(x[i]);
-                return out + "]";
+                return x;
             }
         },
         v);
@@ -110,15 +69,33 @@ std::string text_value(const Value& v) {
             } else if constexpr (std::is_same_v<T, bool>) {
                 return x ? "yes" : "no";
             } else if constexpr (std::is_same_v<T, rigid::Vec3>) {
-                return "(" + short_number(x.x()) + ", " + short_number(x.y()) + ", " + short_number(x.z()) + ")";
+                return fmt::format("({:.6g}, {:.6g}, {:.6g})", x.x(), x.y(), x.z());
             } else {
-                std::string out = "[";
-                for (std::size_t i = 0; i < x.size(); ++i) out += (i ? ", " : "") + short_number(x[i]);
-                return out + "]";
+                return fmt::format("[{:.6g}]", fmt::join(x, ", "));
             }
         },
         v);
 }
+
+// The number of one-letter edits between two option names (Levenshtein), to suggest the
+// option a typo meant.
+std::size_t edits(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// The options every scene has, besides its own.
+const std::vector<std::string> kit_options = {"out", "no-figure", "json", "budget", "list-options", "help"};
 
 }  // namespace
 
@@ -248,6 +225,44 @@ Options& Options::choice(const std::string& name, const std::string& fallback,
     return *this;
 }
 
+Options& Options::real(const std::string& name, double* field, const std::string& help, Rule rule) {
+    real(name, *field, help, std::move(rule));
+    specs_.back().bind = [this, name, field] { *field = reals_.at(name); };
+    return *this;
+}
+
+Options& Options::integer(const std::string& name, long* field, const std::string& help, long min, long max) {
+    integer(name, *field, help, min, max);
+    specs_.back().bind = [this, name, field] { *field = integers_.at(name); };
+    return *this;
+}
+
+Options& Options::integer(const std::string& name, int* field, const std::string& help, int min, int max) {
+    integer(name, static_cast<long>(*field), help, min, max);
+    specs_.back().bind = [this, name, field] { *field = static_cast<int>(integers_.at(name)); };
+    return *this;
+}
+
+Options& Options::vector(const std::string& name, rigid::Vec3* field, const std::string& help, VecRule rule) {
+    vector(name, *field, help, std::move(rule));
+    specs_.back().bind = [this, name, field] { *field = vectors_.at(name); };
+    return *this;
+}
+
+Options& Options::choice(const std::string& name, std::string* field, const std::vector<std::string>& choices,
+                         const std::string& help) {
+    choice(name, *field, choices, help);
+    specs_.back().bind = [this, name, field] { *field = choices_.at(name); };
+    return *this;
+}
+
+std::string Options::option_names() const {
+    std::vector<std::string> names;
+    for (const auto& s : specs_) names.push_back("--" + s.name);
+    for (const auto& k : kit_options) names.push_back("--" + k);
+    return fmt::format("{}", fmt::join(names, ", "));
+}
+
 bool Options::parse(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -276,7 +291,7 @@ bool Options::parse(int argc, char** argv) {
             has_value = true;
         }
         const Spec* spec = find(name);
-        if (name != "out" && name != "budget" && !spec) throw BadInput("unknown option --" + name + " (see --help)");
+        if (name != "out" && name != "budget" && !spec) throw BadInput(unknown_option(name));
         if (!has_value) {
             // A value may itself start with '-' (a negative number), but never with "--".
             if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
@@ -295,7 +310,22 @@ bool Options::parse(int argc, char** argv) {
             spec->set(value);
         }
     }
+    for (const auto& s : specs_)
+        if (s.bind) s.bind();
     return true;
+}
+
+std::string Options::unknown_option(const std::string& name) const {
+    // The nearest option by one-letter edits, when it is near enough to be what was meant.
+    std::string nearest;
+    std::size_t best = 3;
+    for (const auto& s : specs_)
+        if (const std::size_t d = edits(name, s.name); d < best && d < std::max<std::size_t>(name.size(), 2)) {
+            best = d;
+            nearest = s.name;
+        }
+    return "unknown option --" + name + (nearest.empty() ? "" : " (did you mean --" + nearest + "?)") + "; " +
+           scene_ + " takes " + option_names();
 }
 
 double Options::real(const std::string& name) const { return reals_.at(name); }
@@ -322,26 +352,25 @@ void Options::print_help(std::ostream& os) const {
 }
 
 void Options::print_option_list(std::ostream& os) const {
-    os << "{\"scene\": " << json_string(scene_) << ", \"budget_s\": " << number(default_budget_s) << ", \"options\": [";
-    for (std::size_t i = 0; i < specs_.size(); ++i) {
-        const Spec& s = specs_[i];
-        os << (i ? ",\n  " : "\n  ") << "{\"name\": " << json_string(s.name) << ", \"kind\": " << json_string(s.kind)
-           << ", \"default\": " << json_string(s.shown_default);
+    Json options = Json::array();
+    for (const Spec& s : specs_) {
+        Json o = {{"name", s.name}, {"kind", s.kind}, {"default", s.shown_default}};
         if (s.kind == "word") {
-            os << ", \"choices\": [";
-            for (std::size_t c = 0; c < s.choices.size(); ++c) os << (c ? ", " : "") << json_string(s.choices[c]);
-            os << "]";
+            o["choices"] = s.choices;
         } else {
             // The bounds as the option reads them back: whole numbers for an integer option.
             const auto text = [&](double x) {
                 return s.kind == "integer" ? std::to_string(static_cast<long>(x)) : shortest(x);
             };
-            os << ", \"min\": " << shortest(s.lo) << ", \"max\": " << shortest(s.hi) << ", \"min_text\": \"" << text(s.lo)
-               << "\", \"max_text\": \"" << text(s.hi) << "\"";
+            o["min"] = s.lo;
+            o["max"] = s.hi;
+            o["min_text"] = text(s.lo);
+            o["max_text"] = text(s.hi);
         }
-        os << "}";
+        options.push_back(std::move(o));
     }
-    os << "\n]}\n";
+    const Json list = {{"scene", scene_}, {"budget_s", default_budget_s}, {"options", std::move(options)}};
+    os << list.dump(2) << "\n";
 }
 
 namespace {
@@ -382,27 +411,24 @@ void Report::table(const std::string& key, std::vector<std::string> columns, std
 
 void Report::write_text(std::ostream& os) const {
     if (has_headline_) {
-        os << "  error     " << std::setw(12) << short_number(error_) << "   " << error_measure_ << "\n"
-           << "  run time  " << std::setw(12) << short_number(run_time_s_) << "   s\n";
+        os << fmt::format("  error     {:>12}   {}\n", short_number(error_), error_measure_)
+           << fmt::format("  run time  {:>12}   s\n", short_number(run_time_s_));
     }
     std::size_t width = 0;
     for (const auto& f : fields_) width = std::max(width, f.key.size());
-    for (const auto& f : fields_) {
-        os << "  " << std::left << std::setw(static_cast<int>(width)) << f.key << std::right << "  " << text_value(f.value);
-        if (!f.note.empty()) os << "   " << f.note;
-        os << "\n";
-    }
+    for (const auto& f : fields_)
+        os << fmt::format("  {:<{}}  {}{}\n", f.key, width, text_value(f.value), f.note.empty() ? "" : "   " + f.note);
     for (const auto& t : tables_) {
         if (!t.in_text) {
-            os << "  " << t.key << ": " << t.rows.size() << " rows (in the --json output)\n";
+            os << fmt::format("  {}: {} rows (in the --json output)\n", t.key, t.rows.size());
             continue;
         }
-        os << "\n  " << t.key << ":\n  ";
-        for (const auto& c : t.columns) os << std::setw(16) << c;
+        os << fmt::format("\n  {}:\n  ", t.key);
+        for (const auto& c : t.columns) os << fmt::format("{:>16}", c);
         os << "\n";
         for (const auto& r : t.rows) {
             os << "  ";
-            for (double x : r) os << std::setw(16) << short_number(x);
+            for (double x : r) os << fmt::format("{:>16}", short_number(x));
             os << "\n";
         }
     }
@@ -410,28 +436,17 @@ void Report::write_text(std::ostream& os) const {
 }
 
 void Report::write_json(std::ostream& os, const Options& opts, const std::vector<std::string>& figures) const {
-    os << "{\n  \"scene\": " << json_string(opts.scene()) << ",\n  \"summary\": " << json_string(opts.summary());
+    Json report = {{"scene", opts.scene()}, {"summary", opts.summary()}};
     if (has_headline_) {
-        os << ",\n  \"error_measure\": " << json_string(error_measure_) << ",\n  \"error\": " << json_number(error_)
-           << ",\n  \"run_time_s\": " << json_number(run_time_s_);
+        report["error_measure"] = error_measure_;
+        report["error"] = error_;
+        report["run_time_s"] = run_time_s_;
     }
-    for (const auto& f : fields_) os << ",\n  " << json_string(f.key) << ": " << json_value(f.value);
-    for (const auto& t : tables_) {
-        os << ",\n  " << json_string(t.key) << ": {\"columns\": [";
-        for (std::size_t i = 0; i < t.columns.size(); ++i) os << (i ? ", " : "") << json_string(t.columns[i]);
-        os << "], \"rows\": [";
-        for (std::size_t r = 0; r < t.rows.size(); ++r) {
-            os << (r ? ",\n    [" : "\n    [");
-            for (std::size_t i = 0; i < t.rows[r].size(); ++i) os << (i ? ", " : "") << json_number(t.rows[r][i]);
-            os << "]";
-        }
-        os << "]}";
-    }
-    os << ",\n  \"notes\": [";
-    for (std::size_t i = 0; i < notes_.size(); ++i) os << (i ? ", " : "") << json_string(notes_[i]);
-    os << "],\n  \"figures\": [";
-    for (std::size_t i = 0; i < figures.size(); ++i) os << (i ? ", " : "") << json_string(figures[i]);
-    os << "]\n}\n";
+    for (const auto& f : fields_) report[f.key] = json_value(f.value);
+    for (const auto& t : tables_) report[t.key] = {{"columns", t.columns}, {"rows", t.rows}};
+    report["notes"] = notes_;
+    report["figures"] = figures;
+    os << report.dump(2) << "\n";
 }
 
 // ---------------------------------------------------------------------------- Scene

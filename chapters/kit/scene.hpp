@@ -8,15 +8,26 @@
 //   * a report that puts the scene's error next to its run time (text or JSON);
 //   * figures staged and published only when the whole scene succeeded (figure.hpp).
 //
-// A scene is a small main():
+// A scene is a small main(): its parameters are the fields of a struct, each bound to a named
+// option with its range and help; parse, compute, report and draw are named steps.
 //
+//   struct Params {
+//       double alpha = 1.0;  // the default is the field's initial value
+//   };
+//   void declare(kit::Options& opts, Params& p) {
+//       opts.real("alpha", &p.alpha, "rotation frequency", kit::between(1e-6, 1e6));
+//   }
 //   int main(int argc, char** argv) {
+//       Params p;
 //       kit::Options opts("my_scene", "Chapter N: what it shows");
-//       opts.real("alpha", 1.0, "rotation frequency", kit::between(1e-6, 1e6));
-//       return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-//           ...compute, scene.report.headline(...), kit::Figure fig(scene, "x.svg"); ...
+//       declare(opts, p);
+//       return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+//           report(scene, compute(p));  // scene.report.headline(...), kit::Figure fig(scene, "x.svg"); ...
 //       });
 //   }
+//
+// An option the scene does not declare (a typo, an option of another scene) is refused at the
+// start, with the list of the options the scene has.
 #pragma once
 
 #include <chrono>
@@ -75,6 +86,15 @@ public:
     Options& choice(const std::string& name, const std::string& fallback,
                     const std::vector<std::string>& choices, const std::string& help);
 
+    // The same, bound to a typed field: its initial value is the default, and parse() writes
+    // the value given on the command line into it. The field must outlive the parse.
+    Options& real(const std::string& name, double* field, const std::string& help, Rule rule);
+    Options& integer(const std::string& name, long* field, const std::string& help, long min, long max);
+    Options& integer(const std::string& name, int* field, const std::string& help, int min, int max);
+    Options& vector(const std::string& name, rigid::Vec3* field, const std::string& help, VecRule rule);
+    Options& choice(const std::string& name, std::string* field, const std::vector<std::string>& choices,
+                    const std::string& help);
+
     // Reads argv; throws BadInput naming the option and the rule. Returns false after --help.
     bool parse(int argc, char** argv);
 
@@ -91,16 +111,20 @@ public:
     double budget_s() const { return budget_s_; }   // --budget SECONDS
     void print_help(std::ostream& os) const;
     void print_option_list(std::ostream& os) const;   // --list-options: JSON
+    // "--A, --B, ..., --help": every option the scene accepts, its own and the kit's.
+    std::string option_names() const;
 
 private:
     struct Spec {
         std::string name, help, kind, rule_text;
         std::vector<std::string> choices;
         std::function<void(const std::string&)> set;   // parses and checks one value
+        std::function<void()> bind;                    // writes the value into a bound field
         std::string shown_default;
         double lo = 0, hi = 0;                         // the accepted range (numbers, integers, vectors)
     };
     Spec& add(const std::string& name);
+    std::string unknown_option(const std::string& name) const;
     const Spec* find(const std::string& name) const;
 
     std::string scene_, summary_;
