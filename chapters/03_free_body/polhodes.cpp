@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "rigid/free_body_exact.hpp"
@@ -31,10 +32,8 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I");
-        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
+        kit::require_moments(I, "I", {kit::Order::distinct});  // polhodes about two axes
         const auto [lo, mid, hi] = scene3::sorted_axes(I);
-        if (!(I(lo) < I(mid) && I(mid) < I(hi)))
-            throw kit::BadInput("--I: the moments must be distinct (an asymmetric body) for polhodes about two axes");
         const double E = o.real("energy"), tol = o.real("tol");
         const int curves = static_cast<int>(o.integer("curves")), samples = static_cast<int>(o.integer("samples"));
         const std::string method = o.choice("method");

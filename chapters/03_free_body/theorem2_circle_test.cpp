@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "rigid/free_body_exact.hpp"
@@ -57,9 +58,8 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I");
-        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
+        kit::require_moments(I, "I", {kit::Order::distinct});
         const auto [lo, mid, hi] = scene3::sorted_axes(I);
-        if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct (an asymmetric body)");
         const double E = o.real("energy"), tol = o.real("tol");
         const int n = static_cast<int>(o.integer("samples"));
         // The work: about 60 motions sampled n times per period, and 5 rk8pd checks of at most

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
@@ -59,11 +60,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 moments(o.real("A"), o.real("B"), o.real("C"));
-        if (!(moments(0) < moments(1) && moments(1) < moments(2)))
-            throw kit::BadInput("--A, --B, --C: need A < B < C (an asymmetric body), got " + std::to_string(moments(0)) + ", " +
-                                std::to_string(moments(1)) + ", " + std::to_string(moments(2)));
-        if (!(moments(2) <= moments(0) + moments(1)))
-            throw kit::BadInput("--A, --B, --C: need the triangle inequality A + B >= C (a real body)");
+        kit::require_moments(moments(0), moments(1), moments(2), {"A", "B", "C"});
         const int restarts = static_cast<int>(o.integer("restarts"));
         const unsigned seed = static_cast<unsigned>(o.integer("seed"));
         const std::vector<double> ratios = {0.5, 1.0, std::sqrt(2.0), 2.0, 3.0};

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "rigid/heavy_top.hpp"
 #include "scene.hpp"
@@ -27,10 +28,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 asym(o.real("A"), o.real("B"), o.real("C")), sym(o.real("B"), o.real("B"), o.real("C"));
-        if (!(asym(0) < asym(1) && asym(1) < asym(2)))
-            throw kit::BadInput("--A, --B, --C: need A < B < C (an asymmetric body)");
-        if (!(asym(2) <= asym(0) + asym(1)))
-            throw kit::BadInput("--A, --B, --C: need the triangle inequality A + B >= C (a real body)");
+        kit::require_moments(asym(0), asym(1), asym(2), {"A", "B", "C"});
         const int restarts = static_cast<int>(o.integer("restarts"));
         const unsigned seed = static_cast<unsigned>(o.integer("seed"));
         const std::vector<double> ratios = {0.5, 1.0, 2.0};

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "body.hpp"
 #include "rigid/grioli.hpp"
 #include "scene.hpp"
 
@@ -27,9 +28,10 @@ inline kit::Options& moment_options(kit::Options& opts) {
 // close and A is small); it passes the largest C / A for which its checks still hold.
 // rigid::moments' own message is passed on, prefixed by the options it concerns.
 inline rigid::Moments moments(const kit::Options& o, double max_C_over_A = std::numeric_limits<double>::infinity()) {
+    kit::require_moments(o.real("A"), o.real("B"), o.real("C"), {"A", "B", "C"});
     rigid::Moments m{};
     try {
-        m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));
+        m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));  // the exact rule C - B <= A, on the gaps
     } catch (const std::invalid_argument& e) {
         throw kit::BadInput(std::string("--A, --B, --C: ") + e.what());
     }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "body.hpp"
 #include "../../tests/quad_reference.hpp"
 #include "rigid/inertia.hpp"
 #include "scene.hpp"
@@ -27,6 +28,7 @@ inline void body_options(kit::Options& o, double A_g = 1.0, double B_g = 2.0, do
 // The body of the options, or BadInput naming the options and the rule they break.
 inline BodyAtG body(const kit::Options& o) {
     const BodyAtG b{o.real("Ag"), o.real("Bg"), o.real("Cg"), o.real("mu")};
+    kit::require_moments(b.A_g, b.B_g, b.C_g, {"Ag", "Bg", "Cg"}, {kit::Order::increasing, kit::Triangle::strict});
     try {
         rigid::require_body(b);
     } catch (const std::invalid_argument& e) {
