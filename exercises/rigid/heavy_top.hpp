@@ -18,6 +18,7 @@
 #pragma once
 
 #include "rigid/ode.hpp"
+#include "rigid/precession.hpp"  // RegularPrecession, the struct only (no function of it is called)
 #include "rigid/types.hpp"
 
 namespace rigid {
@@ -80,15 +81,12 @@ private:
 // end snippet
 
 // snippet: heavy_top_trial
-// A trial regular precession R(t) = R^b(beta t) R^a(alpha t) [P, (1.4)]: axes a and b
-// (normalised by the functions that take one), frequencies alpha and beta ([P] takes them
-// > 0; the formulas below hold for any finite values, a negative one turning the other way).
-struct TrialPrecession {
-    Vec3 a;
-    double alpha;
-    Vec3 b;
-    double beta;
-};
+// A trial regular precession R(t) = R^b(beta t) R^a(alpha t) [P, (1.4)]: the four constants
+// of Chapter 2's RegularPrecession {a, alpha, b, beta}, the same struct under the name this
+// chapter gives it. Axes a and b are normalised by the functions that take one; [P] takes
+// alpha, beta > 0, but the formulas below hold for any finite values (a negative one turning
+// the other way), and a search may pass through them.
+using TrialPrecession = RegularPrecession;
 
 // The Euler vector E = J Omega_dot - [J Omega, Omega] along the trial precession, at time t,
 // with Omega(t) from [P, (1.5)] and its exact time derivative                       [P, (3.4)]

@@ -19,6 +19,7 @@ namespace rigid {
 
 // snippet: regular_precession
 // The four constants of a regular precession                                        [P, (1.4)]
+// (Chapter 4 calls the same struct TrialPrecession.)
 struct RegularPrecession {
     Vec3 a;        // rotation vector (normalised by every function)
     double alpha;  // rotation frequency, > 0
