@@ -33,24 +33,28 @@ std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The three precessions: the angle between a and b (degrees), alpha and beta of each.
+    struct Case {
+        double angle, alpha, beta;
+    };
+    Case given[3] = {{90, 1.0, 1.0}, {35, 2.0, 0.7}, {125, 0.6, 1.5}};
     kit::Options opts("precession_cones", "Chapter 2: space and body cones, and a body point's path, for three precessions");
-    opts.real("angle1", 90, "case 1: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha1", 1.0, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta1", 1.0, "case 1: precession frequency beta", kit::between(1e-6, 1e6))
-        .real("angle2", 35, "case 2: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha2", 2.0, "case 2: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta2", 0.7, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
-        .real("angle3", 125, "case 3: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha3", 0.6, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta3", 1.5, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
+    opts.real("angle1", &given[0].angle, "case 1: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha1", &given[0].alpha, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta1", &given[0].beta, "case 1: precession frequency beta", kit::between(1e-6, 1e6))
+        .real("angle2", &given[1].angle, "case 2: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha2", &given[1].alpha, "case 2: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta2", &given[1].beta, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
+        .real("angle3", &given[2].angle, "case 3: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha3", &given[2].alpha, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta3", &given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+    return kit::run(argc, argv, opts, [&given](const kit::Options&, kit::Scene& scene) {
         const Vec3 b = Vec3::UnitZ();
         std::vector<RegularPrecession> cases;
         for (int c = 1; c <= 3; ++c) {
-            const double th = o.real("angle" + std::to_string(c)) * std::numbers::pi / 180;
-            cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), o.real("alpha" + std::to_string(c)), b,
-                             o.real("beta" + std::to_string(c))});
+            const double th = given[c - 1].angle * std::numbers::pi / 180;
+            cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), given[c - 1].alpha, b, given[c - 1].beta});
             // omega is checked by differences of R over h = 0.02 / (alpha + beta) at times up to
             // 2 pi / beta: for alpha >> beta the sum t + j h keeps only the leading digits of h.
             const double ratio = cases.back().alpha / cases.back().beta;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "rigid/free_body_exact.hpp"
@@ -42,149 +43,211 @@ std::string short_number(double x) {
     return buf;
 }
 
+// The scene's parameters, bound to its options.
+struct Params {
+    Vec3 I{3, 4, 6};
+    double spin = 10, delta = 1e-3, T = 20, h = 2e-3, tol = 1e-12;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.vector("I", &p.I, "principal moments (distinct; the middle one is the unstable axis)",
+                kit::components_between(1e-3, 1e3))
+        .real("spin", &p.spin, "Omega about the middle axis", kit::between(1e-3, 1e3))
+        .real("delta", &p.delta, "perturbation of the other two components (at most spin / 10)", kit::between(1e-9, 1e3))
+        .real("T", &p.T, "time span", kit::between(1e-3, 1e6))
+        .real("h", &p.h, "step of the student's RK4 (at most T / 10)", kit::between(1e-9, 1e3))
+        .real("tol", &p.tol, "rk8pd tolerance", kit::between(1e-14, 1e-3));
+}
+
+// The body's axes sorted by moment, and the starts near the middle axis.
+struct Setup {
+    Params p;
+    int lo, mid, hi;
+    // Omega(0): the spin about the middle axis, d about the smallest, ratio_hi d about the largest.
+    Vec3 start(double d, double ratio_hi) const {
+        Vec3 w = Vec3::Zero();
+        w(mid) = p.spin;
+        w(lo) = d;
+        w(hi) = ratio_hi * d;
+        return w;
+    }
+};
+
+Setup setup(const kit::Options& o, const Params& p) {
+    kit::require_moments(p.I, "I", {kit::Order::distinct});
+    const auto [lo, mid, hi] = scene3::sorted_axes(p.I);
+    const double spin = p.spin, delta = p.delta, T = p.T, h = p.h, tol = p.tol;
+    if (h > 0.1 * T) throw kit::BadInput("--h must be at most T / 10");
+    // A flip about the middle axis needs a small perturbation: with delta near the spin the
+    // motion is no longer near the separatrix, and the figure's labels would not hold.
+    if (!(delta <= 0.1 * spin))
+        throw kit::BadInput("--delta: got " + short_number(delta) + "; it must be at most spin / 10 = " +
+                            short_number(0.1 * spin) + " (--spin), to stay near the separatrix");
+    // The work: the student's RK4 (3 timed runs of T / h steps), rk8pd (3 timed runs, about
+    // steps_per_radian radians of the spin's phase each), and the approach table (six rk8pd
+    // runs at tolerance 1e-14 over at most T).
+    const double phase = spin * T, rk8pd_steps_per_radian = 0.25 * std::pow(1e-12 / tol, 1.0 / 8);
+    kit::require_budget(o, {3 * T / h, 1e-6, "RK4 steps", "--T, --h"});
+    kit::require_budget(o, {3 * phase * rk8pd_steps_per_radian + 6 * phase * 0.4, 4e-6, "rk8pd steps",
+                            "--T, --spin, --tol"});
+    return {p, lo, mid, hi};
+}
+
+// 1. The flips: exact, rk8pd, the student's RK4; and the separatrix motion.
+struct Flip {
+    rigid::FreeBodyMotion exact, sep;
+    std::vector<std::vector<double>> comps, err_rows;
+    double e8 = 0, e4 = 0, t8 = 0, t4 = 0;
+};
+
+Flip flip(const Setup& u) {
+    const Vec3& I = u.p.I;
+    const int lo = u.lo, mid = u.mid, hi = u.hi;
+    const double T = u.p.T;
+    const double delta = u.p.delta, h = u.p.h, tol = u.p.tol;
+    const auto start = [&u](double d, double ratio_hi) { return u.start(d, ratio_hi); };
+    Flip f;
+    // On the separatrix, I_lo (I_mid - I_lo) W_lo^2 = I_hi (I_hi - I_mid) W_hi^2.
+    const Vec3 w0 = start(delta, 1.0);
+    const auto exact = f.exact = rigid::free_body_motion(I, w0);
+    const double ratio = std::sqrt(I(lo) * (I(mid) - I(lo)) / (I(hi) * (I(hi) - I(mid))));
+    // Of the two separatrix branches through this neighbourhood, take the one that flips forward in time.
+    auto& sep = f.sep;
+    sep = rigid::free_body_motion(I, start(delta, ratio));
+    if (rigid::free_body_exact_omega(sep, T)(mid) > 0) sep = rigid::free_body_motion(I, start(delta, -ratio));
+    const int n = 400;
+    const auto times = rigid::linspace(0, T, n);
+    scene3::Run r8, r4;
+    f.t8 = kit::min_time([&] { r8 = scene3::integrate(I, w0, times, "rk8pd", tol); }, 3);
+    f.t4 = kit::min_time([&] { r4 = scene3::integrate(I, w0, times, "rk4", h); }, 3);
+    auto &comps = f.comps, &err_rows = f.err_rows;
+    auto &e8 = f.e8, &e4 = f.e4;
+    for (int k = 0; k <= n; ++k) {
+        const Vec3 we = rigid::free_body_exact_omega(exact, times[k]);
+        const Vec3 ws = rigid::free_body_exact_omega(sep, times[k]);
+        const double a8 = (r8.Omega[k] - we).norm() / w0.norm(), a4 = (r4.Omega[k] - we).norm() / w0.norm();
+        e8 = std::max(e8, a8);
+        e4 = std::max(e4, a4);
+        comps.push_back({times[k], we(lo), we(mid), we(hi), ws(mid), r4.Omega[k](mid)});
+        err_rows.push_back({times[k], std::max(a8, 1e-18), std::max(a4, 1e-18)});
+    }
+    return f;
+}
+
+// The headline and the check of the label "separatrix: one flip only".
+void report_flip(kit::Report& report, const Flip& f) {
+    const auto &exact = f.exact, &sep = f.sep;
+    const auto& comps = f.comps;
+    report.headline("max |Omega_rk8pd - Omega_exact| / |Omega(0)| over [0, T] near the separatrix", f.e8, f.t8);
+    report.add("m_c", exact.m_c, "complementary elliptic parameter of the default motion");
+    report.add("period", exact.period, "of Omega(t): two flips");
+    report.add("rk4_error", f.e4, "the student's RK4 at step h, same measure");
+    report.add("rk4_run_time_s", f.t4);
+    report.add("separatrix_m_c", sep.m_c, "the separatrix motion: m_c must be 0");
+    // The label "separatrix: one flip only" must hold on [0, T]. Started from rounded numbers,
+    // the separatrix motion has m_c of order eps^2, not 0: a period of about
+    // 4 ln(4 / sqrt(m_c)) / lambda, after which it flips again.
+    int flips = 0;
+    for (std::size_t k = 1; k < comps.size(); ++k)
+        if ((comps[k][4] > 0) != (comps[k - 1][4] > 0)) ++flips;
+    if (!(sep.m_c <= 1e-12))
+        throw kit::CheckFailed("the separatrix motion has m_c = " + short_number(sep.m_c) + "; it must be 0 (to 1e-12)");
+    if (flips > 1)
+        throw kit::CheckFailed("the curve labelled 'separatrix: one flip only' flips " + std::to_string(flips) +
+                               " times in [0, T]: its start, rounded to double, has m_c = " + short_number(sep.m_c) +
+                               " instead of 0, hence a period of " + short_number(sep.period) +
+                               "; take --T below about " + short_number(0.75 * sep.period));
+    report.add("separatrix_flips", static_cast<long>(flips), "sign changes of its middle component in [0, T]");
+
+}
+
+// 2. Ever closer to the separatrix.
+void report_approach(kit::Report& report, const Setup& u) {
+    const Vec3& I = u.p.I;
+    const double spin = u.p.spin, T = u.p.T;
+    const auto start = [&u](double d, double ratio_hi) { return u.start(d, ratio_hi); };
+    std::vector<std::vector<double>> table;
+    double worst_ref = 0;
+    for (double d : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
+        const auto mo = rigid::free_body_motion(I, start(d, 1.0));
+        const double Tn = std::min(T, 0.75 * mo.period);  // past the first flip
+        // (a) The reference against itself: restart from Omega(Tn / 2).
+        const auto re = rigid::free_body_motion(I, rigid::free_body_exact_omega(mo, Tn / 2));
+        const double self = (rigid::free_body_exact_omega(re, Tn / 2) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+        worst_ref = std::max(worst_ref, self);
+        // (b) With GSL's elljac(u, m): 1 - m formed inside.
+        const double gsl_diff =
+            (omega_with_gsl_elljac(mo, Tn) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+        // (c) rk8pd against the reference at Tn.
+        const scene3::Run run = scene3::integrate(I, mo.Omega0, {0.0, Tn}, "rk8pd", 1e-14);
+        const double e = (run.Omega.back() - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+        table.push_back({d, mo.m_c, mo.period, Tn, self, gsl_diff, e, std::numeric_limits<double>::epsilon() / mo.m_c});
+    }
+    report.add("reference_self_consistency", worst_ref, "max over the table of the restart difference / spin");
+    report.table("approach", {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
+                       table);
+
+}
+
+void draw_flip(kit::Scene& scene, const Flip& f) {
+    const auto& comps = f.comps;
+    // The small components are drawn ten times larger, and the vertical range is taken from
+    // everything drawn, so that no curve is cut off.
+    std::vector<std::vector<double>> c1, c2, c3, c4, c5;
+    double top = 0;
+    for (std::size_t k = 0; k < comps.size(); ++k) {
+        const auto& c = comps[k];
+        c1.push_back({c[0], 10 * c[1]});
+        c2.push_back({c[0], c[2]});
+        c3.push_back({c[0], 10 * c[3]});
+        c4.push_back({c[0], c[4]});
+        if (k % 4 == 0) c5.push_back({c[0], c[5]});
+        top = std::max({top, std::abs(10 * c[1]), std::abs(c[2]), std::abs(10 * c[3]), std::abs(c[4]), std::abs(c[5])});
+    }
+    kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
+    fig << "set title 'Spin about the middle axis, perturbed by δ: the body flips (exact motion)'\n"
+           "set xlabel 't'\nset ylabel 'components of Ω'\nset key outside right\n"
+           "set yrange [" + std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) + "]\n"
+           "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
+           "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
+           "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
+           "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
+           "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
+    fig.data(c1).data(c2).data(c3).data(c4).data(c5);
+    fig.finish();
+
+}
+
+void draw_error(kit::Scene& scene, const Setup& u, const Flip& f) {
+    const double tol = u.p.tol, h = u.p.h;
+    const auto& err_rows = f.err_rows;
+    kit::Figure fe(scene, "dzhanibekov_error.svg", 900, 480);
+    fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
+          "set xlabel 't'\nset ylabel '|Ω − Ω_{exact}| / |Ω(0)|'\n"
+          "set logscale y\nset format y '10^{%L}'\nset key top left\n"
+          "plot '-' using 1:2 with lines ls 1 title " + kit::quoted("rk8pd, tol " + short_number(tol)) + ", "
+          "'-' using 1:2 with lines ls 2 title " + kit::quoted("student RK4, h = " + short_number(h)) + "\n";
+    std::vector<std::vector<double>> a, b;
+    for (const auto& r : err_rows) {
+        a.push_back({r[0], r[1]});
+        b.push_back({r[0], r[2]});
+    }
+    fe.data(a).data(b);
+    fe.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("dzhanibekov", "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
-    opts.vector("I", Vec3(3, 4, 6), "principal moments (distinct; the middle one is the unstable axis)",
-                kit::components_between(1e-3, 1e3))
-        .real("spin", 10, "Omega about the middle axis", kit::between(1e-3, 1e3))
-        .real("delta", 1e-3, "perturbation of the other two components (at most spin / 10)", kit::between(1e-9, 1e3))
-        .real("T", 20, "time span", kit::between(1e-3, 1e6))
-        .real("h", 2e-3, "step of the student's RK4 (at most T / 10)", kit::between(1e-9, 1e3))
-        .real("tol", 1e-12, "rk8pd tolerance", kit::between(1e-14, 1e-3));
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const Vec3 I = o.vector("I");
-        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
-        const auto [lo, mid, hi] = scene3::sorted_axes(I);
-        if (!(I(lo) < I(mid) && I(mid) < I(hi))) throw kit::BadInput("--I: the moments must be distinct");
-        const double spin = o.real("spin"), delta = o.real("delta"), T = o.real("T"), h = o.real("h"), tol = o.real("tol");
-        if (h > 0.1 * T) throw kit::BadInput("--h must be at most T / 10");
-        // A flip about the middle axis needs a small perturbation: with delta near the spin the
-        // motion is no longer near the separatrix, and the figure's labels would not hold.
-        if (!(delta <= 0.1 * spin))
-            throw kit::BadInput("--delta: got " + short_number(delta) + "; it must be at most spin / 10 = " +
-                                short_number(0.1 * spin) + " (--spin), to stay near the separatrix");
-        // The work: the student's RK4 (3 timed runs of T / h steps), rk8pd (3 timed runs, about
-        // steps_per_radian radians of the spin's phase each), and the approach table (six rk8pd
-        // runs at tolerance 1e-14 over at most T).
-        const double phase = spin * T, rk8pd_steps_per_radian = 0.25 * std::pow(1e-12 / tol, 1.0 / 8);
-        kit::require_budget(o, {3 * T / h, 1e-6, "RK4 steps", "--T, --h"});
-        kit::require_budget(o, {3 * phase * rk8pd_steps_per_radian + 6 * phase * 0.4, 4e-6, "rk8pd steps",
-                                "--T, --spin, --tol"});
-        auto start = [&](double d, double ratio_hi) {
-            Vec3 w = Vec3::Zero();
-            w(mid) = spin;
-            w(lo) = d;
-            w(hi) = ratio_hi * d;
-            return w;
-        };
-
-        // 1. The flips: exact, rk8pd, the student's RK4; and the separatrix motion. On the
-        //    separatrix, I_lo (I_mid - I_lo) W_lo^2 = I_hi (I_hi - I_mid) W_hi^2.
-        const Vec3 w0 = start(delta, 1.0);
-        const auto exact = rigid::free_body_motion(I, w0);
-        const double ratio = std::sqrt(I(lo) * (I(mid) - I(lo)) / (I(hi) * (I(hi) - I(mid))));
-        // Of the two separatrix branches through this neighbourhood, take the one that flips forward in time.
-        auto sep = rigid::free_body_motion(I, start(delta, ratio));
-        if (rigid::free_body_exact_omega(sep, T)(mid) > 0) sep = rigid::free_body_motion(I, start(delta, -ratio));
-        const int n = 400;
-        const auto times = rigid::linspace(0, T, n);
-        scene3::Run r8, r4;
-        const double t8 = kit::min_time([&] { r8 = scene3::integrate(I, w0, times, "rk8pd", tol); }, 3);
-        const double t4 = kit::min_time([&] { r4 = scene3::integrate(I, w0, times, "rk4", h); }, 3);
-        std::vector<std::vector<double>> comps, err_rows;
-        double e8 = 0, e4 = 0;
-        for (int k = 0; k <= n; ++k) {
-            const Vec3 we = rigid::free_body_exact_omega(exact, times[k]);
-            const Vec3 ws = rigid::free_body_exact_omega(sep, times[k]);
-            const double a8 = (r8.Omega[k] - we).norm() / w0.norm(), a4 = (r4.Omega[k] - we).norm() / w0.norm();
-            e8 = std::max(e8, a8);
-            e4 = std::max(e4, a4);
-            comps.push_back({times[k], we(lo), we(mid), we(hi), ws(mid), r4.Omega[k](mid)});
-            err_rows.push_back({times[k], std::max(a8, 1e-18), std::max(a4, 1e-18)});
-        }
-        scene.report.headline("max |Omega_rk8pd - Omega_exact| / |Omega(0)| over [0, T] near the separatrix", e8, t8);
-        scene.report.add("m_c", exact.m_c, "complementary elliptic parameter of the default motion");
-        scene.report.add("period", exact.period, "of Omega(t): two flips");
-        scene.report.add("rk4_error", e4, "the student's RK4 at step h, same measure");
-        scene.report.add("rk4_run_time_s", t4);
-        scene.report.add("separatrix_m_c", sep.m_c, "the separatrix motion: m_c must be 0");
-        // The label "separatrix: one flip only" must hold on [0, T]. Started from rounded numbers,
-        // the separatrix motion has m_c of order eps^2, not 0: a period of about
-        // 4 ln(4 / sqrt(m_c)) / lambda, after which it flips again.
-        int flips = 0;
-        for (std::size_t k = 1; k < comps.size(); ++k)
-            if ((comps[k][4] > 0) != (comps[k - 1][4] > 0)) ++flips;
-        if (!(sep.m_c <= 1e-12))
-            throw kit::CheckFailed("the separatrix motion has m_c = " + short_number(sep.m_c) + "; it must be 0 (to 1e-12)");
-        if (flips > 1)
-            throw kit::CheckFailed("the curve labelled 'separatrix: one flip only' flips " + std::to_string(flips) +
-                                   " times in [0, T]: its start, rounded to double, has m_c = " + short_number(sep.m_c) +
-                                   " instead of 0, hence a period of " + short_number(sep.period) +
-                                   "; take --T below about " + short_number(0.75 * sep.period));
-        scene.report.add("separatrix_flips", static_cast<long>(flips), "sign changes of its middle component in [0, T]");
-
-        // 2. Ever closer to the separatrix.
-        std::vector<std::vector<double>> table;
-        double worst_ref = 0;
-        for (double d : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
-            const auto mo = rigid::free_body_motion(I, start(d, 1.0));
-            const double Tn = std::min(T, 0.75 * mo.period);  // past the first flip
-            // (a) The reference against itself: restart from Omega(Tn / 2).
-            const auto re = rigid::free_body_motion(I, rigid::free_body_exact_omega(mo, Tn / 2));
-            const double self = (rigid::free_body_exact_omega(re, Tn / 2) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
-            worst_ref = std::max(worst_ref, self);
-            // (b) With GSL's elljac(u, m): 1 - m formed inside.
-            const double gsl_diff =
-                (omega_with_gsl_elljac(mo, Tn) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
-            // (c) rk8pd against the reference at Tn.
-            const scene3::Run run = scene3::integrate(I, mo.Omega0, {0.0, Tn}, "rk8pd", 1e-14);
-            const double e = (run.Omega.back() - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
-            table.push_back({d, mo.m_c, mo.period, Tn, self, gsl_diff, e, std::numeric_limits<double>::epsilon() / mo.m_c});
-        }
-        scene.report.add("reference_self_consistency", worst_ref, "max over the table of the restart difference / spin");
-        scene.report.table("approach", {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
-                           table);
-
-        // The small components are drawn ten times larger, and the vertical range is taken from
-        // everything drawn, so that no curve is cut off.
-        std::vector<std::vector<double>> c1, c2, c3, c4, c5;
-        double top = 0;
-        for (std::size_t k = 0; k < comps.size(); ++k) {
-            const auto& c = comps[k];
-            c1.push_back({c[0], 10 * c[1]});
-            c2.push_back({c[0], c[2]});
-            c3.push_back({c[0], 10 * c[3]});
-            c4.push_back({c[0], c[4]});
-            if (k % 4 == 0) c5.push_back({c[0], c[5]});
-            top = std::max({top, std::abs(10 * c[1]), std::abs(c[2]), std::abs(10 * c[3]), std::abs(c[4]), std::abs(c[5])});
-        }
-        kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
-        fig << "set title 'Spin about the middle axis, perturbed by δ: the body flips (exact motion)'\n"
-               "set xlabel 't'\nset ylabel 'components of Ω'\nset key outside right\n"
-               "set yrange [" + std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) + "]\n"
-               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
-               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
-               "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
-               "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
-               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
-        fig.data(c1).data(c2).data(c3).data(c4).data(c5);
-        fig.finish();
-
-        kit::Figure fe(scene, "dzhanibekov_error.svg", 900, 480);
-        fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
-              "set xlabel 't'\nset ylabel '|Ω − Ω_{exact}| / |Ω(0)|'\n"
-              "set logscale y\nset format y '10^{%L}'\nset key top left\n"
-              "plot '-' using 1:2 with lines ls 1 title " + kit::quoted("rk8pd, tol " + short_number(tol)) + ", "
-              "'-' using 1:2 with lines ls 2 title " + kit::quoted("student RK4, h = " + short_number(h)) + "\n";
-        std::vector<std::vector<double>> a, b;
-        for (const auto& r : err_rows) {
-            a.push_back({r[0], r[1]});
-            b.push_back({r[0], r[2]});
-        }
-        fe.data(a).data(b);
-        fe.finish();
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
+        const Setup u = setup(o, p);
+        const Flip f = flip(u);
+        report_flip(scene.report, f);
+        report_approach(scene.report, u);
+        draw_flip(scene, f);
+        draw_error(scene, u, f);
     });
 }

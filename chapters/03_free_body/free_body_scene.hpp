@@ -11,6 +11,7 @@
 #include "rigid/free_body.hpp"
 #include "rigid/integrators.hpp"
 #include "rigid/ode.hpp"
+#include "sweep.hpp"
 
 namespace scene3 {
 
@@ -64,13 +65,7 @@ inline Run integrate(const Vec3& I, const Vec3& Omega0, const std::vector<double
         run.Omega.push_back(s.Omega);
         run.R.push_back(s.R);
     };
-    const VecX y0 = rigid::pack({Omega0, Mat3::Identity()});
-    if (method == "rk4") {
-        run.work = 4 * rigid::integrate_rk4(f, y0, times, observe, tol_or_h);
-    } else {
-        run.work = rigid::integrate_gsl(f, y0, times, observe, {.method = method, .rel_tol = tol_or_h, .abs_tol = tol_or_h})
-                       .rhs_calls;
-    }
+    run.work = kit::integrate_by_name(f, rigid::pack({Omega0, Mat3::Identity()}), times, observe, method, tol_or_h);
     return run;
 }
 

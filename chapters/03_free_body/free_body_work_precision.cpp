@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "rigid/free_body_exact.hpp"
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
         const Vec3 I = o.vector("I"), w0 = o.vector("Omega0");
-        rigid::require_principal_moments(I, "--I");  // kit::run reports std::invalid_argument as bad input
+        kit::require_moments(I, "I", {kit::Order::any});
         if (!(w0.norm() > 0)) throw kit::BadInput("--Omega0 must not be zero");
         const double T = o.real("T");
         const int repeats = static_cast<int>(o.integer("repeats"));
@@ -52,18 +53,11 @@ int main(int argc, char** argv) {
         }, repeats);
         const double E0 = rigid::rotational_energy(I, w0), M0 = rigid::angular_momentum_squared(I, w0);
 
-        struct Case {
-            std::string method;
-            double param;
-        };
-        std::vector<Case> cases;
-        for (double h : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001}) cases.push_back({"rk4", h});
-        for (int e = 4; e <= 13; ++e) cases.push_back({"rkf45", std::pow(10.0, -e)});
-        for (int e = 4; e <= 14; ++e) cases.push_back({"rk8pd", std::pow(10.0, -e)});
+        const std::vector<kit::SweepCase> cases = kit::rk4_rkf45_rk8pd_sweep();
 
         std::vector<std::vector<double>> rows;  // method id, param, time, rhs, err_Omega, err_R, dE, dM, orth
         double head_err = 0, head_time = 0;
-        for (const Case& c : cases) {
+        for (const kit::SweepCase& c : cases) {
             scene3::Run run;
             const double t = kit::min_time([&] { run = scene3::integrate(I, w0, times, c.method, c.param); }, repeats);
             double eO = 0, eR = 0, dE = 0, dM = 0, orth = 0;
@@ -74,7 +68,7 @@ int main(int argc, char** argv) {
                 dM = std::max(dM, std::abs(rigid::angular_momentum_squared(I, run.Omega[k]) - M0) / M0);
                 orth = std::max(orth, rigid::orthogonality_defect(run.R[k]));
             }
-            const double id = c.method == "rk4" ? 0 : c.method == "rkf45" ? 1 : 2;
+            const double id = kit::sweep_method_id(c.method);
             rows.push_back({id, c.param, t, double(run.work), eO, eR, dE, dM, orth});
             if (c.method == "rk8pd" && c.param == 1e-12) head_err = std::max(eO, eR), head_time = t;
         }

@@ -190,210 +190,281 @@ Growth perturbation(const rigid::Moments& m, double delta, int periods, double t
 }
 // end snippet
 
+// The scene's parameters, bound to its options.
+struct Params {
+    long nu = 60, nv = 40, periods = 1500;
+    double tol = 1e-11;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.integer("nu", &p.nu, "grid points along u = (B - A)/(C - A)", 4, 400)
+        .integer("nv", &p.nv, "grid points along v = (C - A)/B", 4, 400)
+        .integer("periods", &p.periods, "periods followed after a perturbation", 20, 100000)
+        .real("tol", &p.tol, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6));
+}
+
+// (1) The map of the largest multiplier over the shapes, and its edges: the flat bodies (v = 1)
+// and the two symmetric limits (the first and the last column, u -> 0 and u -> 1).
+struct Map {
+    std::vector<std::vector<double>> map;  // u, v, growth per period, rotation number
+    double worst = -1, worst_u = 0, worst_v = 0;
+    long unstable = 0;
+    double flat_unstable = 0, flat_u_min = 2, flat_u_max = -1, edge_growth_B_A = -1e300, edge_growth_B_C = -1e300;
+    double time_s = 0;
+};
+
+Map stability_map(int nu, int nv, double tol) {
+    Map M;
+    auto& map = M.map;
+    auto &worst = M.worst, &worst_u = M.worst_u, &worst_v = M.worst_v;
+    auto& unstable = M.unstable;
+    auto &flat_unstable = M.flat_unstable, &flat_u_min = M.flat_u_min, &flat_u_max = M.flat_u_max;
+    auto &edge_growth_B_A = M.edge_growth_B_A, &edge_growth_B_C = M.edge_growth_B_C;
+    M.time_s = kit::min_time([&] {
+        map.clear();
+        for (int j = 0; j < nv; ++j) {
+            const double v = (j + 1.0) / nv;  // up to the flat bodies, v = 1
+            for (int i = 0; i < nu; ++i) {
+                const double u = (i + 0.5) / nu;
+                const Floquet f = floquet(monodromy(shape(u, v), rigid::Sense::ccw, tol));
+                map.push_back({u, v, f.growth, f.rotation});
+                if (f.growth > worst) worst = f.growth, worst_u = u, worst_v = v;
+            }
+            map.push_back({});  // a blank row between rows of the grid
+        }
+    }, 1);
+    for (const auto& r : map) {
+        if (r.empty()) continue;
+        if (r[2] > 1e-4) ++unstable;
+        if (r[1] == 1.0 && r[2] > 1e-4) ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
+        if (r[0] < 1.0 / nu) edge_growth_B_A = std::max(edge_growth_B_A, r[2]);
+        if (r[0] > 1 - 1.0 / nu) edge_growth_B_C = std::max(edge_growth_B_C, r[2]);
+    }
+
+    return M;
+}
+
+// (2) Perturbations of a few bodies, from the symmetric limits to the flat one and the most
+// unstable shape of the grid.
+struct Perturbed {
+    std::vector<Body> bodies;
+    // body, delta, power, rate, r2 power, r2 rate, exponential, floquet, d(end)/delta, window rate
+    // and start, rotation number
+    std::vector<std::vector<double>> rows;
+    std::vector<std::vector<double>> settled_rows;  // body, window rate, start, length, floquet, rotation number
+    std::vector<std::vector<std::vector<double>>> curves;
+    int exponential_bodies = 0, linear_bodies = 0;
+    double time_s = 0;
+};
+
+Perturbed perturbed_bodies(const rigid::Moments& tongue, int periods, double tol) {
+    Perturbed P;
+    const auto& bodies = P.bodies;
+    auto &rows = P.rows, &settled_rows = P.settled_rows;
+    auto& curves = P.curves;
+    auto &exponential_bodies = P.exponential_bodies, &linear_bodies = P.linear_bodies;
+    P.bodies = {{"generic (1, 1.5, 2)", rigid::moments(1, 1.5, 2)},
+                                   {"near B = A (1, 1.001, 2)", rigid::moments_from_gaps(1, 1e-3, 0.999)},
+                                   {"near B = C (1, 1.999, 2)", rigid::moments_from_gaps(1, 0.999, 1e-3)},
+                                   {"flat (1, 1.5, 2.5)", rigid::moments(1, 1.5, 2.5)},
+                                   {"flat (1, 3, 4)", rigid::moments(1, 3, 4)},
+                                   {"in the tongue " + triple(tongue), tongue}};
+    P.time_s = kit::min_time([&] {
+        rows.clear(), curves.clear(), settled_rows.clear();
+        exponential_bodies = linear_bodies = 0;
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            const Floquet f = floquet(monodromy(bodies[b].m, rigid::Sense::ccw, tol));
+            int exp_votes = 0;
+            for (double delta : {1e-8, 1e-6, 1e-4}) {
+                const Growth gr = perturbation(bodies[b].m, delta, periods, tol);
+                rows.push_back({double(b), delta, gr.power, gr.rate, gr.r2_power, gr.r2_rate, gr.exponential ? 1.0 : 0.0,
+                                f.growth, gr.deviation.back() / delta, gr.window_rate, gr.window_start, f.rotation});
+                exp_votes += gr.exponential;
+                std::vector<std::vector<double>> c;
+                for (std::size_t k = 1; k < gr.periods.size(); ++k) c.push_back({gr.periods[k], gr.deviation[k] / delta});
+                curves.push_back(c);
+            }
+            (exp_votes >= 2 ? exponential_bodies : linear_bodies)++;
+            // An exponential growth's rate, read where it has settled: a smaller change (1e-10)
+            // at a tighter tolerance leaves the transient behind before d reaches 0.01.
+            Growth settled;
+            settled.window_rate = settled.window_start = settled.window_periods = std::numeric_limits<double>::quiet_NaN();
+            if (exp_votes >= 2) settled = perturbation(bodies[b].m, 1e-10, periods, std::min(tol, 1e-12));
+            settled_rows.push_back({double(b), settled.window_rate, settled.window_start, settled.window_periods,
+                                    f.growth, f.rotation});
+        }
+    }, 1);
+
+    return P;
+}
+
+// Checks of the linear analysis, on the most unstable shape of the map (the tongue): the
+// multipliers by differences of the flow, and the clockwise sense (the time reversal of the
+// counter-clockwise one).
+struct Checks {
+    Floquet f_var, f_fd, f_cw;
+};
+
+Checks check_tongue(const rigid::Moments& tongue, double tol) {
+    return {floquet(monodromy(tongue, rigid::Sense::ccw, tol)), floquet(monodromy_by_differences(tongue, 1e-12, 1e-6)),
+            floquet(monodromy(tongue, rigid::Sense::cw, tol))};
+}
+
+void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rigid::Moments& tongue, const Checks& c,
+            const Perturbed& P) {
+    const auto& [f_var, f_fd, f_cw] = c;
+    const auto& map = M.map;
+    const auto& bodies = P.bodies;
+    const auto &rows = P.rows, &settled_rows = P.settled_rows;
+    const double map_time = M.time_s, perturb_time = P.time_s;
+    const double worst = M.worst, worst_u = M.worst_u, worst_v = M.worst_v, flat_unstable = M.flat_unstable;
+    const double flat_u_min = M.flat_u_min, flat_u_max = M.flat_u_max;
+    const double edge_growth_B_A = M.edge_growth_B_A, edge_growth_B_C = M.edge_growth_B_C;
+    const long unstable = M.unstable;
+    const int linear_bodies = P.linear_bodies, exponential_bodies = P.exponential_bodies;
+    r.headline("largest |ln|mu|| difference between the Floquet multipliers from the variational "
+                          "equations and from differences of the flow (body in the tongue)",
+                          std::abs(f_var.growth - f_fd.growth), map_time + perturb_time);
+    r.add("grid_points", static_cast<long>(nu * nv));
+    r.add("unstable_points", unstable, "growth per period > 1e-4");
+    r.add("unstable_fraction", double(unstable) / (nu * nv));
+    r.add("largest_growth_per_period", worst, "ln |mu| at the most unstable grid point");
+    r.add("flat_unstable_fraction", flat_unstable / nu, "of the flat bodies v = 1 on the grid");
+    r.add("flat_unstable_u_min", flat_unstable > 0 ? flat_u_min : -1.0);
+    r.add("flat_unstable_u_max", flat_unstable > 0 ? flat_u_max : -1.0);
+    r.add("edge_growth_B_near_A", edge_growth_B_A, "largest ln |mu| in the column next to B = A");
+    r.add("edge_growth_B_near_C", edge_growth_B_C, "largest ln |mu| in the column next to B = C");
+    r.add("largest_growth_u", worst_u);
+    r.add("largest_growth_v", worst_v);
+    r.add("tongue_A", tongue.A);
+    r.add("tongue_B", tongue.B);
+    r.add("tongue_C", tongue.C);
+    r.add("tongue_multiplier_real", f_var.rotation > 0.49 ? -std::exp(f_var.growth) : std::exp(f_var.growth),
+                     "the largest multiplier (real and negative in the tongue)");
+    r.add("tongue_growth_by_differences", f_fd.growth);
+    r.add("tongue_growth_clockwise", f_cw.growth);
+    r.add("map_time_s", map_time);
+    r.add("perturbation_time_s", perturb_time);
+    r.add("periods", static_cast<long>(periods));
+    r.add("linear_bodies", static_cast<long>(linear_bodies));
+    r.add("exponential_bodies", static_cast<long>(exponential_bodies));
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const auto& row = rows[3 * b + 1];  // delta = 1e-6
+        const std::string k = "body" + std::to_string(b) + "_";
+        r.add(k + "name", bodies[b].name);
+        r.add(k + "power", row[2], "fitted d ~ t^power, delta = 1e-6");
+        r.add(k + "rate", row[3], "fitted d ~ exp(rate t/P) on the later half before d = 0.01, delta = 1e-6");
+        r.add(k + "floquet_growth", row[7], "ln |mu| per period");
+        r.add(k + "rotation_number", row[11], "arg(mu) / 2 pi of the multiplier pair farthest from 1");
+        // Measured for the bodies that grow exponentially; null (not measured) for the others.
+        r.add(k + "settled_rate", settled_rows[b][1],
+                         "growth per period over the last window before d = 0.01, delta = 1e-10");
+        r.add(k + "settled_window_start", settled_rows[b][2]);
+        r.add(k + "settled_window_periods", settled_rows[b][3]);
+        r.add(k + "settled_over_floquet", settled_rows[b][1] / settled_rows[b][4]);
+        r.add(k + "verdict", row[6] > 0.5 ? std::string("exponential") : std::string("linear"));
+        r.add(k + "final_over_delta", row[8], "d(end) / delta, delta = 1e-6");
+    }
+    r.table("perturbations",
+                       {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
+                        "floquet_growth_per_period", "final_over_delta", "window_rate", "window_start", "rotation_number"},
+                       rows);
+    r.table("map", {"u", "v", "growth_per_period", "rotation_number"}, [&] {
+        std::vector<std::vector<double>> m;
+        for (const auto& row : map)
+            if (!row.empty()) m.push_back(row);
+        return m;
+    }(), false);
+
+}
+
+void draw_map(kit::Scene& scene, const Map& M, const Perturbed& P) {
+    const auto& map = M.map;
+    const auto& bodies = P.bodies;
+    kit::Figure fm(scene, "grioli_stability_map.svg", 900, 620);
+    if (fm.enabled()) {
+        fm << "set title 'Grioli precession: growth of the largest Floquet multiplier, ln|μ| per period'\n"
+              "set xlabel 'u = (B - A)/(C - A)   (B = A at the left, B = C at the right)'\n"
+              "set ylabel 'v = (C - A)/B   (v = 1: flat body, A + B = C)'\n"
+              "set xrange [0:1]\nset yrange [0:1.02]\nset cbrange [0:*]\nset cblabel 'ln|μ| per period'\n"
+              "set palette defined (0 'white', 0.02 '#fde0c5', 0.3 '#f39c6b', 1 '#b2182b')\n"
+              "set view map\nset key bottom left opaque font ',10'\n"
+              "splot '-' using 1:2:3 with pm3d notitle, '-' using 1:2:(0) with points pt 7 ps 1.2 lc rgb '#0072B2' "
+              "title 'bodies of the perturbed runs', '-' using 1:2:(0):(sprintf('%d', $3)) with labels offset 0,1 font ',9' notitle\n";
+        fm.data(map);
+        std::vector<std::vector<double>> pts;
+        for (const Body& b : bodies) pts.push_back({(b.m.B - b.m.A) / (b.m.C - b.m.A), (b.m.C - b.m.A) / b.m.B});
+        fm.data(pts);
+        std::vector<std::vector<double>> labels;
+        for (std::size_t i = 0; i < pts.size(); ++i) labels.push_back({pts[i][0], pts[i][1], double(i + 1)});
+        fm.data(labels);
+        fm.finish();
+    }
+}
+
+void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
+    const auto& bodies = P.bodies;
+    const auto& rows = P.rows;
+    const auto& curves = P.curves;
+    kit::Figure fp(scene, "grioli_perturbations.svg", 1200, 520);
+    if (fp.enabled()) {
+        fp << "set multiplot layout 1, 2 title 'Grioli precession: deviation after a change δ of Ω(0), "
+              "at whole periods'\nset xlabel 't / P'\nset format y '10^{%L}'\nset key top left font ',8' spacing 0.85\n"
+              "set logscale xy\nset title 'd / δ, log-log (δ = 10^{-8} solid, 10^{-6} dashed, 10^{-4} dotted); slope 1: linear'\n"
+              "set ylabel 'd / δ'\n";
+        std::string plot = "plot ";
+        std::vector<std::vector<std::vector<double>>> blocks;
+        const char* colours[] = {"#000000", "#0072B2", "#56B4E9", "#009E73", "#E69F00", "#D55E00"};
+        const std::size_t first = 3 * (bodies.size() - 1);  // the most unstable body goes right
+        for (std::size_t i = 0; i < first; ++i) {
+            const std::size_t b = i / 3;
+            plot += std::string("'-' with lines lc rgb '") + colours[b] + "' lw 1.5 dt " + std::to_string(1 + i % 3) +
+                    (i % 3 == 0 ? " title " + kit::quoted(bodies[b].name) : std::string(" notitle")) + ", ";
+            blocks.push_back(curves[i]);
+        }
+        plot += "x with lines lc rgb '#777777' dt 4 title 'proportional to t'\n";
+        fp << plot;
+        for (const auto& c : blocks) fp.data(c);
+        fp << "unset logscale x\nset title 'the most unstable body of the map: d, and the Floquet growth |μ|^{t/P}'\n"
+              "set ylabel 'd'\nset yrange [1e-9:10]\nset xrange [0:80]\nset key bottom right\n";
+        plot = "plot ";
+        blocks.clear();
+        const double g = rows[first][7];
+        for (std::size_t i = first; i < curves.size(); ++i) {
+            std::ostringstream delta;
+            delta << rows[i][1];
+            plot += "'-' using 1:($2*" + delta.str() + ") with lines lc rgb '#D55E00' lw 1.5 dt " +
+                    std::to_string(1 + (i - first)) + " title " +
+                    kit::quoted("δ = 10^{" + std::to_string(std::lround(std::log10(rows[i][1]))) + "}") + ", ";
+            blocks.push_back(curves[i]);
+        }
+        std::ostringstream guide;
+        guide << "1e-6*exp(" << g << "*x) with lines lc rgb '#777777' dt 4 title 'δ |μ|^{t/P}, δ = 10^{-6}'\n";
+        fp << plot << guide.str();
+        for (const auto& c : blocks) fp.data(c);
+        fp << "unset multiplot\n";
+        fp.finish();
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("grioli_stability", "Chapter 7: the stability of the Grioli precession, linear and nonlinear");
-    opts.integer("nu", 60, "grid points along u = (B - A)/(C - A)", 4, 400)
-        .integer("nv", 40, "grid points along v = (C - A)/B", 4, 400)
-        .integer("periods", 1500, "periods followed after a perturbation", 20, 100000)
-        .real("tol", 1e-11, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6));
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const int nu = static_cast<int>(o.integer("nu")), nv = static_cast<int>(o.integer("nv"));
-        const int periods = static_cast<int>(o.integer("periods"));
-        const double tol = o.real("tol");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
+        const int nu = static_cast<int>(p.nu), nv = static_cast<int>(p.nv), periods = static_cast<int>(p.periods);
         // The work: a monodromy matrix (13 equations over one period) per grid point, and 18
         // perturbed runs over `periods` periods.
-        kit::require_budget(o, {13.0 * nu * nv + 18.0 * periods, ch5::seconds_per_period("rk8pd", tol), "periods of rk8pd",
-                                "--nu, --nv, --periods, --tol"});
-
-        // (1) The map of the largest multiplier over the shapes.
-        std::vector<std::vector<double>> map;  // u, v, growth per period, rotation number
-        double worst = -1, worst_u = 0, worst_v = 0;
-        long unstable = 0;
-        const double map_time = kit::min_time([&] {
-            map.clear();
-            for (int j = 0; j < nv; ++j) {
-                const double v = (j + 1.0) / nv;  // up to the flat bodies, v = 1
-                for (int i = 0; i < nu; ++i) {
-                    const double u = (i + 0.5) / nu;
-                    const Floquet f = floquet(monodromy(shape(u, v), rigid::Sense::ccw, tol));
-                    map.push_back({u, v, f.growth, f.rotation});
-                    if (f.growth > worst) worst = f.growth, worst_u = u, worst_v = v;
-                }
-                map.push_back({});  // a blank row between rows of the grid
-            }
-        }, 1);
-        // The edges of the map: the flat bodies (v = 1) and the two symmetric limits (the first and
-        // the last column, u -> 0 and u -> 1).
-        double flat_unstable = 0, flat_u_min = 2, flat_u_max = -1, edge_growth_B_A = -1e300, edge_growth_B_C = -1e300;
-        for (const auto& r : map) {
-            if (r.empty()) continue;
-            if (r[2] > 1e-4) ++unstable;
-            if (r[1] == 1.0 && r[2] > 1e-4) ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
-            if (r[0] < 1.0 / nu) edge_growth_B_A = std::max(edge_growth_B_A, r[2]);
-            if (r[0] > 1 - 1.0 / nu) edge_growth_B_C = std::max(edge_growth_B_C, r[2]);
-        }
-
-        // Checks of the linear analysis: the multipliers by differences of the flow, and the
-        // clockwise sense (the time reversal of the counter-clockwise one).
-        const rigid::Moments tongue = shape(worst_u, worst_v);
-        const Floquet f_var = floquet(monodromy(tongue, rigid::Sense::ccw, tol));
-        const Floquet f_fd = floquet(monodromy_by_differences(tongue, 1e-12, 1e-6));
-        const Floquet f_cw = floquet(monodromy(tongue, rigid::Sense::cw, tol));
-
-        // (2) Perturbations of a few bodies, from the symmetric limits to the flat one and the
-        // most unstable shape of the grid.
-        const std::vector<Body> bodies{{"generic (1, 1.5, 2)", rigid::moments(1, 1.5, 2)},
-                                       {"near B = A (1, 1.001, 2)", rigid::moments_from_gaps(1, 1e-3, 0.999)},
-                                       {"near B = C (1, 1.999, 2)", rigid::moments_from_gaps(1, 0.999, 1e-3)},
-                                       {"flat (1, 1.5, 2.5)", rigid::moments(1, 1.5, 2.5)},
-                                       {"flat (1, 3, 4)", rigid::moments(1, 3, 4)},
-                                       {"in the tongue " + triple(tongue), tongue}};
-        // body, delta, power, rate, r2 power, r2 rate, exponential, floquet, d(end)/delta, window rate and start,
-        // rotation number
-        std::vector<std::vector<double>> rows;
-        std::vector<std::vector<double>> settled_rows;  // body, window rate, start, length, floquet, rotation number
-        std::vector<std::vector<std::vector<double>>> curves;
-        int exponential_bodies = 0, linear_bodies = 0;
-        const double perturb_time = kit::min_time([&] {
-            rows.clear(), curves.clear(), settled_rows.clear();
-            exponential_bodies = linear_bodies = 0;
-            for (std::size_t b = 0; b < bodies.size(); ++b) {
-                const Floquet f = floquet(monodromy(bodies[b].m, rigid::Sense::ccw, tol));
-                int exp_votes = 0;
-                for (double delta : {1e-8, 1e-6, 1e-4}) {
-                    const Growth gr = perturbation(bodies[b].m, delta, periods, tol);
-                    rows.push_back({double(b), delta, gr.power, gr.rate, gr.r2_power, gr.r2_rate, gr.exponential ? 1.0 : 0.0,
-                                    f.growth, gr.deviation.back() / delta, gr.window_rate, gr.window_start, f.rotation});
-                    exp_votes += gr.exponential;
-                    std::vector<std::vector<double>> c;
-                    for (std::size_t k = 1; k < gr.periods.size(); ++k) c.push_back({gr.periods[k], gr.deviation[k] / delta});
-                    curves.push_back(c);
-                }
-                (exp_votes >= 2 ? exponential_bodies : linear_bodies)++;
-                // An exponential growth's rate, read where it has settled: a smaller change (1e-10)
-                // at a tighter tolerance leaves the transient behind before d reaches 0.01.
-                Growth settled;
-                settled.window_rate = settled.window_start = settled.window_periods = std::numeric_limits<double>::quiet_NaN();
-                if (exp_votes >= 2) settled = perturbation(bodies[b].m, 1e-10, periods, std::min(tol, 1e-12));
-                settled_rows.push_back({double(b), settled.window_rate, settled.window_start, settled.window_periods,
-                                        f.growth, f.rotation});
-            }
-        }, 1);
-
-        scene.report.headline("largest |ln|mu|| difference between the Floquet multipliers from the variational "
-                              "equations and from differences of the flow (body in the tongue)",
-                              std::abs(f_var.growth - f_fd.growth), map_time + perturb_time);
-        scene.report.add("grid_points", static_cast<long>(nu * nv));
-        scene.report.add("unstable_points", unstable, "growth per period > 1e-4");
-        scene.report.add("unstable_fraction", double(unstable) / (nu * nv));
-        scene.report.add("largest_growth_per_period", worst, "ln |mu| at the most unstable grid point");
-        scene.report.add("flat_unstable_fraction", flat_unstable / nu, "of the flat bodies v = 1 on the grid");
-        scene.report.add("flat_unstable_u_min", flat_unstable > 0 ? flat_u_min : -1.0);
-        scene.report.add("flat_unstable_u_max", flat_unstable > 0 ? flat_u_max : -1.0);
-        scene.report.add("edge_growth_B_near_A", edge_growth_B_A, "largest ln |mu| in the column next to B = A");
-        scene.report.add("edge_growth_B_near_C", edge_growth_B_C, "largest ln |mu| in the column next to B = C");
-        scene.report.add("largest_growth_u", worst_u);
-        scene.report.add("largest_growth_v", worst_v);
-        scene.report.add("tongue_A", tongue.A);
-        scene.report.add("tongue_B", tongue.B);
-        scene.report.add("tongue_C", tongue.C);
-        scene.report.add("tongue_multiplier_real", f_var.rotation > 0.49 ? -std::exp(f_var.growth) : std::exp(f_var.growth),
-                         "the largest multiplier (real and negative in the tongue)");
-        scene.report.add("tongue_growth_by_differences", f_fd.growth);
-        scene.report.add("tongue_growth_clockwise", f_cw.growth);
-        scene.report.add("map_time_s", map_time);
-        scene.report.add("perturbation_time_s", perturb_time);
-        scene.report.add("periods", static_cast<long>(periods));
-        scene.report.add("linear_bodies", static_cast<long>(linear_bodies));
-        scene.report.add("exponential_bodies", static_cast<long>(exponential_bodies));
-        for (std::size_t b = 0; b < bodies.size(); ++b) {
-            const auto& r = rows[3 * b + 1];  // delta = 1e-6
-            const std::string k = "body" + std::to_string(b) + "_";
-            scene.report.add(k + "name", bodies[b].name);
-            scene.report.add(k + "power", r[2], "fitted d ~ t^power, delta = 1e-6");
-            scene.report.add(k + "rate", r[3], "fitted d ~ exp(rate t/P) on the later half before d = 0.01, delta = 1e-6");
-            scene.report.add(k + "floquet_growth", r[7], "ln |mu| per period");
-            scene.report.add(k + "rotation_number", r[11], "arg(mu) / 2 pi of the multiplier pair farthest from 1");
-            // Measured for the bodies that grow exponentially; null (not measured) for the others.
-            scene.report.add(k + "settled_rate", settled_rows[b][1],
-                             "growth per period over the last window before d = 0.01, delta = 1e-10");
-            scene.report.add(k + "settled_window_start", settled_rows[b][2]);
-            scene.report.add(k + "settled_window_periods", settled_rows[b][3]);
-            scene.report.add(k + "settled_over_floquet", settled_rows[b][1] / settled_rows[b][4]);
-            scene.report.add(k + "verdict", r[6] > 0.5 ? std::string("exponential") : std::string("linear"));
-            scene.report.add(k + "final_over_delta", r[8], "d(end) / delta, delta = 1e-6");
-        }
-        scene.report.table("perturbations",
-                           {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
-                            "floquet_growth_per_period", "final_over_delta", "window_rate", "window_start", "rotation_number"},
-                           rows);
-        scene.report.table("map", {"u", "v", "growth_per_period", "rotation_number"}, [&] {
-            std::vector<std::vector<double>> m;
-            for (const auto& r : map)
-                if (!r.empty()) m.push_back(r);
-            return m;
-        }(), false);
-
-        kit::Figure fm(scene, "grioli_stability_map.svg", 900, 620);
-        if (fm.enabled()) {
-            fm << "set title 'Grioli precession: growth of the largest Floquet multiplier, ln|μ| per period'\n"
-                  "set xlabel 'u = (B - A)/(C - A)   (B = A at the left, B = C at the right)'\n"
-                  "set ylabel 'v = (C - A)/B   (v = 1: flat body, A + B = C)'\n"
-                  "set xrange [0:1]\nset yrange [0:1.02]\nset cbrange [0:*]\nset cblabel 'ln|μ| per period'\n"
-                  "set palette defined (0 'white', 0.02 '#fde0c5', 0.3 '#f39c6b', 1 '#b2182b')\n"
-                  "set view map\nset key bottom left opaque font ',10'\n"
-                  "splot '-' using 1:2:3 with pm3d notitle, '-' using 1:2:(0) with points pt 7 ps 1.2 lc rgb '#0072B2' "
-                  "title 'bodies of the perturbed runs', '-' using 1:2:(0):3 with labels offset 0,1 font ',9' notitle\n";
-            fm.data(map);
-            std::vector<std::vector<double>> pts;
-            for (const Body& b : bodies) pts.push_back({(b.m.B - b.m.A) / (b.m.C - b.m.A), (b.m.C - b.m.A) / b.m.B});
-            fm.data(pts);
-            std::vector<std::vector<double>> labels;
-            for (std::size_t i = 0; i < pts.size(); ++i) labels.push_back({pts[i][0], pts[i][1], double(i + 1)});
-            fm.data(labels);
-            fm.finish();
-        }
-        kit::Figure fp(scene, "grioli_perturbations.svg", 1200, 520);
-        if (fp.enabled()) {
-            fp << "set multiplot layout 1, 2 title 'Grioli precession: deviation after a change δ of Ω(0), "
-                  "at whole periods'\nset xlabel 't / P'\nset format y '10^{%L}'\nset key top left font ',8' spacing 0.85\n"
-                  "set logscale xy\nset title 'd / δ, log-log (δ = 10^{-8} solid, 10^{-6} dashed, 10^{-4} dotted); slope 1: linear'\n"
-                  "set ylabel 'd / δ'\n";
-            std::string plot = "plot ";
-            std::vector<std::vector<std::vector<double>>> blocks;
-            const char* colours[] = {"#000000", "#0072B2", "#56B4E9", "#009E73", "#E69F00", "#D55E00"};
-            const std::size_t first = 3 * (bodies.size() - 1);  // the most unstable body goes right
-            for (std::size_t i = 0; i < first; ++i) {
-                const std::size_t b = i / 3;
-                plot += std::string("'-' with lines lc rgb '") + colours[b] + "' lw 1.5 dt " + std::to_string(1 + i % 3) +
-                        (i % 3 == 0 ? " title " + kit::quoted(bodies[b].name) : std::string(" notitle")) + ", ";
-                blocks.push_back(curves[i]);
-            }
-            plot += "x with lines lc rgb '#777777' dt 4 title 'proportional to t'\n";
-            fp << plot;
-            for (const auto& c : blocks) fp.data(c);
-            fp << "unset logscale x\nset title 'the most unstable body of the map: d, and the Floquet growth |μ|^{t/P}'\n"
-                  "set ylabel 'd'\nset yrange [1e-9:10]\nset xrange [0:80]\nset key bottom right\n";
-            plot = "plot ";
-            blocks.clear();
-            const double g = rows[first][7];
-            for (std::size_t i = first; i < curves.size(); ++i) {
-                std::ostringstream delta;
-                delta << rows[i][1];
-                plot += "'-' using 1:($2*" + delta.str() + ") with lines lc rgb '#D55E00' lw 1.5 dt " +
-                        std::to_string(1 + (i - first)) + " title " +
-                        kit::quoted("δ = 10^{" + std::to_string(std::lround(std::log10(rows[i][1]))) + "}") + ", ";
-                blocks.push_back(curves[i]);
-            }
-            std::ostringstream guide;
-            guide << "1e-6*exp(" << g << "*x) with lines lc rgb '#777777' dt 4 title 'δ |μ|^{t/P}, δ = 10^{-6}'\n";
-            fp << plot << guide.str();
-            for (const auto& c : blocks) fp.data(c);
-            fp << "unset multiplot\n";
-            fp.finish();
-        }
+        kit::require_budget(o, {13.0 * nu * nv + 18.0 * periods, ch5::seconds_per_period("rk8pd", p.tol),
+                                "periods of rk8pd", "--nu, --nv, --periods, --tol"});
+        const Map map = stability_map(nu, nv, p.tol);
+        const rigid::Moments tongue = shape(map.worst_u, map.worst_v);
+        const Checks checks = check_tongue(tongue, p.tol);
+        const Perturbed perturbed = perturbed_bodies(tongue, periods, p.tol);
+        report(scene.report, nu, nv, periods, map, tongue, checks, perturbed);
+        draw_map(scene, map, perturbed);
+        draw_perturbations(scene, perturbed);
     });
 }

@@ -45,159 +45,213 @@ double late_slope(const std::vector<std::vector<double>>& rows, int c) {
     return n < 3 ? std::numeric_limits<double>::quiet_NaN() : (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
+// The scene's parameters, bound to its options.
+struct Params {
+    long steps = 1000000;
+    double tol = 1e-12;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.integer("steps", &p.steps, "fixed steps of h = 1/16 (a power of two, so that every output time is a whole "
+                 "number of steps)", 1000, 20000000)
+        .real("tol", &p.tol, "tolerance of GSL rk8pd over the same time", kit::between(1e-14, 1e-3));
+}
+
+// The Grioli precession of (1, 1.5, 2) followed for N steps, the output instants and the scales
+// of the invariants.
+struct Problem {
+    long N;
+    double h, period;
+    rigid::GrioliPrecession g;
+    rigid::HeavyTop top;
+    BodyState s0;
+    std::vector<double> times;
+    std::vector<long> at;  // the output instants, in steps
+    double H0, E_scale, L0, L_scale;
+};
+
+Problem problem(long N) {
+    Problem pb;
+    pb.N = N;
+    const double h = pb.h = 1.0 / 16;
+    const rigid::Moments m = rigid::moments(1, 1.5, 2);
+    const rigid::GrioliPrecession g = pb.g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
+    const rigid::HeavyTop top = pb.top = rigid::grioli_top(m, g);
+    const BodyState s0 = pb.s0 = rigid::grioli_initial_state(g);
+    pb.period = 2 * std::numbers::pi / g.alpha;
+
+    // Output instants: whole numbers of steps, about evenly spaced in log.
+    auto& times = pb.times;
+    auto& at = pb.at;
+    times = {0.0};
+    at = {0};
+    for (int i = 0; i <= 59; ++i) {
+        const long n = std::lround(std::pow(10.0, 1 + (std::log10(double(N)) - 1) * i / 59.0));
+        if (n > at.back()) at.push_back(n), times.push_back(n * h);
+    }
+    pb.H0 = rigid::heavy_top_energy(top, s0);
+    pb.E_scale = 0.5 * s0.Omega.dot(top.J * s0.Omega) + top.f;
+    pb.L0 = top.k.dot(s0.R * top.J * s0.Omega), pb.L_scale = (top.J * s0.Omega).norm();
+
+    return pb;
+}
+
+// Your RK4, GSL rk8pd, and RKMK4, Strang and its triple jump with plain and compensated sums.
+std::vector<Track> run_tracks(const Problem& pb, double tol) {
+    const auto& top = pb.top;
+    const auto& g = pb.g;
+    const auto& s0 = pb.s0;
+    const auto& times = pb.times;
+    const auto& at = pb.at;
+    const double h = pb.h, period = pb.period, H0 = pb.H0, E_scale = pb.E_scale, L0 = pb.L0, L_scale = pb.L_scale;
+    std::vector<Track> tracks;
+    std::vector<BodyState> out(times.size());
+    const auto record = [&](Track& tr) {
+        for (std::size_t i = 1; i < times.size(); ++i) {
+            const BodyState& s = out[i];
+            tr.rows.push_back({times[i] / period, double(at[i]),
+                               std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
+                               std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
+                               rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
+        }
+        tracks.push_back(tr);
+    };
+    const rigid::OdeRhs rhs = [&top](double, const VecX& y) {
+        return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
+    };
+
+    {
+        Track tr{"rk4", "your RK4", "lc rgb '#000000'"};
+        std::size_t i = 0;
+        tr.time_s = kit::min_time([&] {
+            i = 0;
+            rigid::integrate_rk4(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
+        }, 1);
+        record(tr);
+    }
+    {
+        std::ostringstream label;
+        label << "GSL rk8pd, tol " << tol;
+        Track tr{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
+        std::size_t i = 0;
+        tr.time_s = kit::min_time([&] {
+            i = 0;
+            rigid::integrate_gsl(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
+                                 {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+        }, 1);
+        record(tr);
+    }
+    const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) { return rigid::rkmk4_step(top, s, dt); };
+    const rigid::IncrementStepper strang = [&top](const BodyState& s, double dt) { return rigid::strang_step(top, s, dt); };
+    const rigid::IncrementStepper yoshida = [&strang](const BodyState& s, double dt) {
+        return rigid::triple_jump(strang, s, dt);
+    };
+    struct Geometric {
+        std::string name, label, colour;
+        const rigid::IncrementStepper* step;
+    };
+    for (const Geometric& gm : {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4},
+                                Geometric{"strang", "Strang", "#D55E00", &strang},
+                                Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
+        for (const auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
+            const bool plain = sum == rigid::Summation::plain;
+            Track tr{gm.name + (plain ? "_plain" : "_compensated"), gm.label + (plain ? ", plain sum" : ", compensated"),
+                     "lc rgb '" + gm.colour + "'" + (plain ? " dt 3" : "")};
+            std::size_t i = 0;
+            tr.time_s = kit::min_time([&] {
+                i = 0;
+                rigid::integrate_steps(*gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
+            }, 1);
+            record(tr);
+        }
+    }
+    return tracks;
+}
+
+// The report: the last row of every track, and the growth of the orthogonality defect.
+void report(kit::Report& r, const Problem& pb, const std::vector<Track>& tracks) {
+    const long N = pb.N;
+    const double h = pb.h, period = pb.period;
+    double worst_orth = 0;
+    for (const Track& tr : tracks) {
+        const auto& last = tr.rows.back();
+        r.add(tr.name + "_time_s", tr.time_s);
+        r.add(tr.name + "_energy_drift", last[2]);
+        r.add(tr.name + "_momentum_drift", last[3]);
+        r.add(tr.name + "_orthogonality", last[4]);
+        r.add(tr.name + "_error_R", last[5]);
+        r.add(tr.name + "_orthogonality_slope", late_slope(tr.rows, 4), "d log(defect) / d log(steps), late half");
+        if (tr.name.find("_compensated") != std::string::npos) worst_orth = std::max(worst_orth, last[4]);
+    }
+    double geometric_time = 0;
+    for (const Track& tr : tracks)
+        if (tr.name.find("_compensated") != std::string::npos) geometric_time += tr.time_s;
+    r.headline("largest ||R^T R - 1||_F after " + std::to_string(N) +
+                              " steps of RKMK4, Strang and its triple jump (compensated sums; target < 1e-13)",
+                          worst_orth, geometric_time);
+    r.add("steps", N);
+    r.add("h", h);
+    r.add("periods", N * h / period);
+    r.add("brouwer", std::numeric_limits<double>::epsilon() * std::sqrt(double(N)), "eps sqrt(steps)");
+
+}
+
+void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks) {
+    const long N = pb.N;
+    const double h = pb.h, period = pb.period;
+    kit::Figure fig(scene, "long_run.svg", 1450, 900);
+    if (!fig.enabled()) return;
+    // One key for the four panels, on their right (the colours are the same in each; the
+    // orthogonality panel has every curve and Brouwer's line, so it draws the key).
+    fig << "set multiplot layout 2, 2 margins 0.07, 0.77, 0.07, 0.92 spacing 0.08, 0.14 title " +
+               kit::quoted("Grioli (1, 1.5, 2): " + std::to_string(N) + " steps of h = 1/16 (" +
+                           std::to_string(long(N * h / period)) + " periods)") +
+               "\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'time (periods)'\n"
+               "";
+    const char* panels[4][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
+                                {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
+                                {"orthogonality ‖R^T R − 1‖_F", "defect"},
+                                {"angle between R and the exact R (rad)", "error"}};
+    for (int p = 0; p < 4; ++p) {
+        fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
+                   (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") + (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
+                            : "unset key\n");
+        std::string plot = "plot ";
+        for (const Track& tr : tracks) plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
+        if (p == 2) {
+            // Brouwer's law: a random walk of one rounding per step.
+            plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'ε √(steps)', ";
+        }
+        plot.resize(plot.size() - 2);
+        fig << plot << "\n";
+        for (const Track& tr : tracks) {
+            std::vector<std::vector<double>> rows;
+            for (const auto& r : tr.rows) rows.push_back({r[0], std::max(r[2 + p], 1e-17)});
+            fig.data(rows);
+        }
+        if (p == 2) {
+            std::vector<std::vector<double>> rows;
+            for (const auto& r : tracks.front().rows)
+                rows.push_back({r[0], std::numeric_limits<double>::epsilon() * std::sqrt(r[1])});
+            fig.data(rows);
+        }
+    }
+    fig << "unset multiplot\n";
+    fig.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("long_run", "Chapter 7: a million steps on the Grioli precession: what drifts and what does not");
-    opts.integer("steps", 1000000, "fixed steps of h = 1/16 (a power of two, so that every output time is a whole "
-                 "number of steps)", 1000, 20000000)
-        .real("tol", 1e-12, "tolerance of GSL rk8pd over the same time", kit::between(1e-14, 1e-3));
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const long N = o.integer("steps");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
         // The work: eight methods over N steps of h = 1/16 (rk8pd over the same time).
-        kit::require_budget(o, {double(N), 1.2e-5, "steps (of each of the eight methods)", "--steps"});
-        const double h = 1.0 / 16;
-        const rigid::Moments m = rigid::moments(1, 1.5, 2);
-        const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
-        const rigid::HeavyTop top = rigid::grioli_top(m, g);
-        const BodyState s0 = rigid::grioli_initial_state(g);
-        const double period = 2 * std::numbers::pi / g.alpha;
-
-        // Output instants: whole numbers of steps, about evenly spaced in log.
-        std::vector<double> times{0.0};
-        std::vector<long> at{0};
-        for (int i = 0; i <= 59; ++i) {
-            const long n = std::lround(std::pow(10.0, 1 + (std::log10(double(N)) - 1) * i / 59.0));
-            if (n > at.back()) at.push_back(n), times.push_back(n * h);
-        }
-        const double H0 = rigid::heavy_top_energy(top, s0);
-        const double E_scale = 0.5 * s0.Omega.dot(top.J * s0.Omega) + top.f;
-        const double L0 = top.k.dot(s0.R * top.J * s0.Omega), L_scale = (top.J * s0.Omega).norm();
-
-        std::vector<Track> tracks;
-        std::vector<BodyState> out(times.size());
-        const auto record = [&](Track& tr) {
-            for (std::size_t i = 1; i < times.size(); ++i) {
-                const BodyState& s = out[i];
-                tr.rows.push_back({times[i] / period, double(at[i]),
-                                   std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
-                                   std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
-                                   rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
-            }
-            tracks.push_back(tr);
-        };
-        const rigid::OdeRhs rhs = [&top](double, const VecX& y) {
-            return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
-        };
-
-        {
-            Track tr{"rk4", "your RK4", "lc rgb '#000000'"};
-            std::size_t i = 0;
-            tr.time_s = kit::min_time([&] {
-                i = 0;
-                rigid::integrate_rk4(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
-            }, 1);
-            record(tr);
-        }
-        {
-            std::ostringstream label;
-            label << "GSL rk8pd, tol " << o.real("tol");
-            Track tr{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
-            std::size_t i = 0;
-            tr.time_s = kit::min_time([&] {
-                i = 0;
-                rigid::integrate_gsl(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
-                                     {.method = "rk8pd", .rel_tol = o.real("tol"), .abs_tol = o.real("tol")});
-            }, 1);
-            record(tr);
-        }
-        const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) { return rigid::rkmk4_step(top, s, dt); };
-        const rigid::IncrementStepper strang = [&top](const BodyState& s, double dt) { return rigid::strang_step(top, s, dt); };
-        const rigid::IncrementStepper yoshida = [&strang](const BodyState& s, double dt) {
-            return rigid::triple_jump(strang, s, dt);
-        };
-        struct Geometric {
-            std::string name, label, colour;
-            const rigid::IncrementStepper* step;
-        };
-        for (const Geometric& gm : {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4},
-                                    Geometric{"strang", "Strang", "#D55E00", &strang},
-                                    Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
-            for (const auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
-                const bool plain = sum == rigid::Summation::plain;
-                Track tr{gm.name + (plain ? "_plain" : "_compensated"), gm.label + (plain ? ", plain sum" : ", compensated"),
-                         "lc rgb '" + gm.colour + "'" + (plain ? " dt 3" : "")};
-                std::size_t i = 0;
-                tr.time_s = kit::min_time([&] {
-                    i = 0;
-                    rigid::integrate_steps(*gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
-                }, 1);
-                record(tr);
-            }
-        }
-
-        // The report: the last row of every track, and the growth of the orthogonality defect.
-        double worst_orth = 0;
-        for (const Track& tr : tracks) {
-            const auto& last = tr.rows.back();
-            scene.report.add(tr.name + "_time_s", tr.time_s);
-            scene.report.add(tr.name + "_energy_drift", last[2]);
-            scene.report.add(tr.name + "_momentum_drift", last[3]);
-            scene.report.add(tr.name + "_orthogonality", last[4]);
-            scene.report.add(tr.name + "_error_R", last[5]);
-            scene.report.add(tr.name + "_orthogonality_slope", late_slope(tr.rows, 4), "d log(defect) / d log(steps), late half");
-            if (tr.name.find("_compensated") != std::string::npos) worst_orth = std::max(worst_orth, last[4]);
-        }
-        double geometric_time = 0;
-        for (const Track& tr : tracks)
-            if (tr.name.find("_compensated") != std::string::npos) geometric_time += tr.time_s;
-        scene.report.headline("largest ||R^T R - 1||_F after " + std::to_string(N) +
-                                  " steps of RKMK4, Strang and its triple jump (compensated sums; target < 1e-13)",
-                              worst_orth, geometric_time);
-        scene.report.add("steps", N);
-        scene.report.add("h", h);
-        scene.report.add("periods", N * h / period);
-        scene.report.add("brouwer", std::numeric_limits<double>::epsilon() * std::sqrt(double(N)), "eps sqrt(steps)");
-
-        kit::Figure fig(scene, "long_run.svg", 1450, 900);
-        if (!fig.enabled()) return;
-        // One key for the four panels, on their right (the colours are the same in each; the
-        // orthogonality panel has every curve and Brouwer's line, so it draws the key).
-        fig << "set multiplot layout 2, 2 margins 0.07, 0.77, 0.07, 0.92 spacing 0.08, 0.14 title " +
-                   kit::quoted("Grioli (1, 1.5, 2): " + std::to_string(N) + " steps of h = 1/16 (" +
-                               std::to_string(long(N * h / period)) + " periods)") +
-                   "\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'time (periods)'\n"
-                   "";
-        const char* panels[4][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
-                                    {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
-                                    {"orthogonality ‖R^T R − 1‖_F", "defect"},
-                                    {"angle between R and the exact R (rad)", "error"}};
-        for (int p = 0; p < 4; ++p) {
-            fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
-                       (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") + (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
-                                : "unset key\n");
-            std::string plot = "plot ";
-            for (const Track& tr : tracks) plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
-            if (p == 2) {
-                // Brouwer's law: a random walk of one rounding per step.
-                plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'ε √(steps)', ";
-            }
-            plot.resize(plot.size() - 2);
-            fig << plot << "\n";
-            for (const Track& tr : tracks) {
-                std::vector<std::vector<double>> rows;
-                for (const auto& r : tr.rows) rows.push_back({r[0], std::max(r[2 + p], 1e-17)});
-                fig.data(rows);
-            }
-            if (p == 2) {
-                std::vector<std::vector<double>> rows;
-                for (const auto& r : tracks.front().rows)
-                    rows.push_back({r[0], std::numeric_limits<double>::epsilon() * std::sqrt(r[1])});
-                fig.data(rows);
-            }
-        }
-        fig << "unset multiplot\n";
-        fig.finish();
+        kit::require_budget(o, {double(p.steps), 1.2e-5, "steps (of each of the eight methods)", "--steps"});
+        const Problem pb = problem(p.steps);
+        const std::vector<Track> tracks = run_tracks(pb, p.tol);
+        report(scene.report, pb, tracks);
+        draw(scene, pb, tracks);
     });
 }

@@ -100,284 +100,348 @@ std::string style(const Panel& panel, std::size_t i) {
     return std::string("lc rgb '") + okabe_ito[i % n] + "' pt " + std::to_string(panel.markers[i % panel.markers.size()]);
 }
 
-}  // namespace
+// The scene's parameters, bound to its options.
+struct Params {
+    std::string sweep = "quick", scenario = "all";
+    double target = 1e-10;
+};
 
-int main(int argc, char** argv) {
+void declare(kit::Options& opts, Params& p) {
     std::vector<std::string> names{"all"};
     for (const bench::Scenario& s : bench::scenarios()) names.push_back(s.name);
-    kit::Options opts("work_precision", "Chapter 7: error against run time for every method and scenario");
-    opts.choice("sweep", "quick", {"smoke", "quick", "full"},
+    opts.choice("sweep", &p.sweep, {"smoke", "quick", "full"},
                 "how much to run: quick (under a minute), full (finer sweeps, 5 repetitions, minutes), smoke (seconds)")
-        .choice("scenario", "all", names, "run one scenario only")
-        .real("target", 1e-10, "the error at which the methods' run times are compared", kit::between(1e-15, 1e-2));
+        .choice("scenario", &p.scenario, names, "run one scenario only")
+        .real("target", &p.target, "the error at which the methods' run times are compared", kit::between(1e-15, 1e-2));
+}
 
-    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
-        const bench::Budget b = bench::budget(o.choice("sweep"));
-        const double target = o.real("target");
-        std::vector<bench::Scenario> all;
-        for (const bench::Scenario& s : bench::scenarios())
-            if (o.choice("scenario") == "all" || o.choice("scenario") == s.name) all.push_back(s);
-        const auto& methods = bench::methods();
-        // The work: per scenario, the long-double reference and each method's sweep, which stops
-        // at the floor or at the budget's time per sweep (measured: about 0.15 of it on average).
-        kit::require_budget(o, {double(all.size()), 0.3 + double(methods.size()) * (0.15 * b.max_sweep_s + 0.5 * b.max_run_s),
-                                "scenarios", "--sweep, --scenario"});
+// Every run of the benchmark: per scenario its reference, per method its sweep.
+struct Sweeps {
+    bench::Budget b;
+    double target;
+    std::vector<bench::Scenario> all;
+    std::map<std::string, bench::Reference> refs;
+    std::map<std::string, std::map<std::string, std::vector<bench::Point>>> points;  // scenario -> method -> sweep
+    double elapsed_s = 0;
+};
 
-        Progress progress;
-        std::map<std::string, bench::Reference> refs;
-        std::map<std::string, std::map<std::string, std::vector<bench::Point>>> points;  // scenario -> method -> sweep
-        for (std::size_t i = 0; i < all.size(); ++i) {
-            const bench::Scenario& sc = all[i];
-            progress.scenario(static_cast<int>(i + 1), static_cast<int>(all.size()), sc.name);
-            progress.run(sc.name + "  long-double reference");
-            refs[sc.name] = bench::reference(sc, b.self_check);
-            for (const bench::Method& m : methods)
-                points[sc.name][m.name] = bench::sweep(sc, m, refs[sc.name], b, [&](const std::string& w) { progress.run(w); });
-        }
-        progress.done();
+Sweeps run_sweeps(const kit::Options& o, const Params& prm) {
+    Sweeps w{bench::budget(prm.sweep), prm.target, {}, {}, {}, 0};
+    const bench::Budget& b = w.b;
+    for (const bench::Scenario& s : bench::scenarios())
+        if (prm.scenario == "all" || prm.scenario == s.name) w.all.push_back(s);
+    const auto& all = w.all;
+    const auto& methods = bench::methods();
+    // The work: per scenario, the long-double reference and each method's sweep, which stops
+    // at the floor or at the budget's time per sweep (measured: about 0.15 of it on average).
+    kit::require_budget(o, {double(all.size()), 0.3 + double(methods.size()) * (0.15 * b.max_sweep_s + 0.5 * b.max_run_s),
+                            "scenarios", "--sweep, --scenario"});
+    auto& refs = w.refs;
+    auto& points = w.points;
+    Progress progress;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const bench::Scenario& sc = all[i];
+        progress.scenario(static_cast<int>(i + 1), static_cast<int>(all.size()), sc.name);
+        progress.run(sc.name + "  long-double reference");
+        refs[sc.name] = bench::reference(sc, b.self_check);
+        for (const bench::Method& m : methods)
+            points[sc.name][m.name] = bench::sweep(sc, m, refs[sc.name], b, [&](const std::string& what) { progress.run(what); });
+    }
+    progress.done();
 
-        // The CSV: every run.
-        std::ostringstream csv;
-        csv << "scenario,method,kind,h_or_tol,run_time_s,repeats,evaluations,err_R_rad,err_Omega_rel,error,"
-               "energy_drift,momentum_drift,orthogonality,status\n";
-        csv << std::setprecision(6);
-        std::vector<std::vector<double>> table;
-        for (std::size_t si = 0; si < all.size(); ++si)
-            for (std::size_t mi = 0; mi < methods.size(); ++mi)
-                for (const bench::Point& p : points[all[si].name][methods[mi].name]) {
-                    csv << p.scenario << "," << p.method << ","
-                        << (methods[mi].kind == bench::Kind::step ? "step" : "tolerance") << "," << p.param << ","
-                        << p.time_s << "," << p.repeats << "," << p.evaluations << ",";
-                    if (p.failed) {
-                        csv << ",,,,,,\"failed: " << p.why << "\"\n";
-                        continue;
-                    }
-                    csv << p.m.err_R << "," << p.m.err_Omega << "," << p.m.error << "," << p.m.dH << "," << p.m.dL << ","
-                        << p.m.orth << ",ok\n";
-                    table.push_back({double(si), double(mi), p.param, p.time_s, double(p.evaluations), p.m.err_R,
-                                     p.m.err_Omega, p.m.dH, p.m.dL, p.m.orth});
-                }
-        write_file(scene, "work_precision.csv", csv.str());
-        scene.report.table("runs",
-                           {"scenario", "method", "h_or_tol", "time_s", "evaluations", "err_R", "err_Omega", "dH", "dL", "orth"},
-                           table, false);
+    w.elapsed_s = progress.elapsed();
+    return w;
+}
 
-        // The summary: per scenario and method, the best error, and the time to reach the target.
-        std::ostringstream md;
-        md << "# Work-precision summary (sweep: " << b.name << ")\n\n"
-           << "Error: the larger of the angle between R and the reference (rad) and |Omega - Omega_ref| / max|Omega|, "
-              "largest over the output times. Run time: integration only, minimum over "
-           << b.repeats << " repetitions. Time to " << sci(target, 0)
-           << ": interpolated on the lower envelope of the sweep. Reference: Taylor degree 24 in long double.\n";
-        std::vector<std::vector<double>> summary;
-        const bench::Point* grioli_best = nullptr;
-        std::string grioli_best_method;
-        for (std::size_t si = 0; si < all.size(); ++si) {
-            const bench::Scenario& sc = all[si];
-            const bench::Reference& ref = refs[sc.name];
-            const double t_rk8pd = bench::time_to_reach(points[sc.name]["rk8pd"], target);
-            md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", "
-               << sci(ref.time_s, 2) << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
-               << "; against the closed form (" << (sc.exact ? sc.exact_name : "none") << "): "
-               << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
-               << "; double-precision floor (the same steps in double): " << sci(ref.double_floor)
-               << " (expected eps kappa sqrt(steps) = " << sci(ref.expected_floor) << ", kappa = " << sci(ref.kappa) << ").\n\n"
-               << "| method | best error | its run time (s) | time to " << sci(target, 0)
-               << " (s) | rk8pd time / this | orthogonality | energy drift | momentum drift |\n"
-               << "|---|---|---|---|---|---|---|---|\n";
-            double fastest = std::numeric_limits<double>::infinity(), fastest_listed = fastest;
-            std::string fastest_name = "none", fastest_listed_name = "none";
-            for (std::size_t mi = 0; mi < methods.size(); ++mi) {
-                const auto& pts = points[sc.name][methods[mi].name];
-                const bench::Point* bp = bench::best(pts);
-                const double t = bench::time_to_reach(pts, target);
-                if (std::isfinite(t) && t < fastest) fastest = t, fastest_name = methods[mi].name;
-                if (std::isfinite(t) && t < fastest_listed && methods[mi].name != "taylor16")
-                    fastest_listed = t, fastest_listed_name = methods[mi].name;
-                if (!bp) {
-                    md << "| " << methods[mi].label << " | failed | | | | | | |\n";
-                    summary.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
+// The CSV of every run (work_precision.csv), and the same as the report's table "runs".
+void write_runs(kit::Scene& scene, const Sweeps& w) {
+    const auto& all = w.all;
+    const auto& methods = bench::methods();
+    auto points = w.points;
+    // The CSV: every run.
+    std::ostringstream csv;
+    csv << "scenario,method,kind,h_or_tol,run_time_s,repeats,evaluations,err_R_rad,err_Omega_rel,error,"
+           "energy_drift,momentum_drift,orthogonality,status\n";
+    csv << std::setprecision(6);
+    std::vector<std::vector<double>> table;
+    for (std::size_t si = 0; si < all.size(); ++si)
+        for (std::size_t mi = 0; mi < methods.size(); ++mi)
+            for (const bench::Point& p : points[all[si].name][methods[mi].name]) {
+                csv << p.scenario << "," << p.method << ","
+                    << (methods[mi].kind == bench::Kind::step ? "step" : "tolerance") << "," << p.param << ","
+                    << p.time_s << "," << p.repeats << "," << p.evaluations << ",";
+                if (p.failed) {
+                    csv << ",,,,,,\"failed: " << p.why << "\"\n";
                     continue;
                 }
-                md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
-                   << " | " << (std::isfinite(t) && std::isfinite(t_rk8pd) ? sci(t_rk8pd / t) : "—") << " | "
-                   << sci(bp->m.orth) << " | " << sci(bp->m.dH) << " | " << sci(bp->m.dL) << " |\n";
-                summary.push_back({100.0 * si + mi, double(si), double(mi), bp->m.error, bp->time_s, t,
-                                   std::isfinite(t) ? t_rk8pd / t : nan_, bp->m.orth, bp->m.dH, bp->m.dL});
-                if (sc.name == "grioli_100" && (!grioli_best || bp->m.error < grioli_best->m.error))
-                    grioli_best = bp, grioli_best_method = methods[mi].label;
+                csv << p.m.err_R << "," << p.m.err_Omega << "," << p.m.error << "," << p.m.dH << "," << p.m.dL << ","
+                    << p.m.orth << ",ok\n";
+                table.push_back({double(si), double(mi), p.param, p.time_s, double(p.evaluations), p.m.err_R,
+                                 p.m.err_Omega, p.m.dH, p.m.dL, p.m.orth});
             }
-            const std::string k = sc.name + "_";
-            scene.report.add(k + "reference_self_difference", ref.self_difference, "long-double reference vs itself at h/2");
-            scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
-            scene.report.add(k + "reference_time_s", ref.time_s);
-            scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
-            scene.report.add(k + "kappa", ref.kappa, "growth of a change of the initial state");
-            scene.report.add(k + "expected_floor", ref.expected_floor, "eps kappa sqrt(steps)");
-            scene.report.add(k + "fastest_at_target", fastest_name);
-            scene.report.add(k + "fastest_time_s", fastest);
-            scene.report.add(k + "rk8pd_time_s", t_rk8pd);
-            scene.report.add(k + "speedup_vs_rk8pd", t_rk8pd / fastest, "rk8pd run time / fastest run time at the target");
-            scene.report.add(k + "fastest_without_taylor", fastest_listed_name, "the same, leaving out the Taylor method");
-            scene.report.add(k + "fastest_without_taylor_time_s", fastest_listed);
-            scene.report.add(k + "speedup_without_taylor", t_rk8pd / fastest_listed);
-            md << "\nFastest to " << sci(target, 0) << ": " << fastest_name << " (" << sci(fastest) << " s, "
-               << (std::isfinite(t_rk8pd / fastest) ? sci(t_rk8pd / fastest, 2) : "—") << " times faster than rk8pd); "
-               << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
-        }
-        scene.report.table("by_method",
-                           {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s", "speedup_vs_rk8pd",
-                            "orthogonality", "energy_drift", "momentum_drift"},
-                           summary, false);
-        md << "\nMethods: ";
-        for (std::size_t mi = 0; mi < methods.size(); ++mi) md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
-        md << ". Scenarios: ";
-        for (std::size_t si = 0; si < all.size(); ++si) md << (si ? ", " : "") << si << " = " << all[si].name;
-        md << ".\n";
-        write_file(scene, "work_precision.md", md.str());
+    write_file(scene, "work_precision.csv", csv.str());
+    scene.report.table("runs",
+                       {"scenario", "method", "h_or_tol", "time_s", "evaluations", "err_R", "err_Omega", "dH", "dL", "orth"},
+                       table, false);
 
-        if (grioli_best) {
-            const double floor = refs["grioli_100"].double_floor;
-            scene.report.headline("best method on Grioli over 100 periods (" + grioli_best_method +
-                                      "): angle between R and the long-double reference, and Omega relative",
-                                  grioli_best->m.error, grioli_best->time_s);
-            scene.report.add("grioli_100_best_method", grioli_best_method);
-            scene.report.add("grioli_100_best_error", grioli_best->m.error);
-            scene.report.add("grioli_100_best_over_floor", grioli_best->m.error / floor, "target: <= 10");
-            // rk8pd's floor with GSL's driver and with the time kept as a two-part sum.
-            const bench::Point* plain = bench::best(points["grioli_100"]["rk8pd"]);
-            const bench::Point* compensated = bench::best(points["grioli_100"]["rk8pd_ct"]);
-            if (plain && compensated) {
-                scene.report.add("rk8pd_floor_gain", plain->m.error / compensated->m.error,
-                                 "Grioli, 100 periods: rk8pd's best error, GSL's driver over compensated time");
-                scene.report.add("rk8pd_ct_over_floor", compensated->m.error / floor, "compensated rk8pd's best / the floor");
+}
+
+// The summary (work_precision.md and the report): per scenario and method, the best error,
+// and the time to reach the target.
+void write_summary(kit::Scene& scene, const Sweeps& w) {
+    const bench::Budget& b = w.b;
+    const double target = w.target;
+    const auto& all = w.all;
+    const auto& methods = bench::methods();
+    auto refs = w.refs;
+    auto points = w.points;
+    // The summary: per scenario and method, the best error, and the time to reach the target.
+    std::ostringstream md;
+    md << "# Work-precision summary (sweep: " << b.name << ")\n\n"
+       << "Error: the larger of the angle between R and the reference (rad) and |Omega - Omega_ref| / max|Omega|, "
+          "largest over the output times. Run time: integration only, minimum over "
+       << b.repeats << " repetitions. Time to " << sci(target, 0)
+       << ": interpolated on the lower envelope of the sweep. Reference: Taylor degree 24 in long double.\n";
+    std::vector<std::vector<double>> summary;
+    const bench::Point* grioli_best = nullptr;
+    std::string grioli_best_method;
+    for (std::size_t si = 0; si < all.size(); ++si) {
+        const bench::Scenario& sc = all[si];
+        const bench::Reference& ref = refs[sc.name];
+        const double t_rk8pd = bench::time_to_reach(points[sc.name]["rk8pd"], target);
+        md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", "
+           << sci(ref.time_s, 2) << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
+           << "; against the closed form (" << (sc.exact ? sc.exact_name : "none") << "): "
+           << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
+           << "; double-precision floor (the same steps in double): " << sci(ref.double_floor)
+           << " (expected eps kappa sqrt(steps) = " << sci(ref.expected_floor) << ", kappa = " << sci(ref.kappa) << ").\n\n"
+           << "| method | best error | its run time (s) | time to " << sci(target, 0)
+           << " (s) | rk8pd time / this | orthogonality | energy drift | momentum drift |\n"
+           << "|---|---|---|---|---|---|---|---|\n";
+        double fastest = std::numeric_limits<double>::infinity(), fastest_listed = fastest;
+        std::string fastest_name = "none", fastest_listed_name = "none";
+        for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+            const auto& pts = points[sc.name][methods[mi].name];
+            const bench::Point* bp = bench::best(pts);
+            const double t = bench::time_to_reach(pts, target);
+            if (std::isfinite(t) && t < fastest) fastest = t, fastest_name = methods[mi].name;
+            if (std::isfinite(t) && t < fastest_listed && methods[mi].name != "taylor16")
+                fastest_listed = t, fastest_listed_name = methods[mi].name;
+            if (!bp) {
+                md << "| " << methods[mi].label << " | failed | | | | | | |\n";
+                summary.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
+                continue;
             }
-        } else {
-            const bench::Point* any = nullptr;
-            for (const auto& [s, per] : points)
-                for (const auto& [m, pts] : per)
-                    if (const bench::Point* p = bench::best(pts); p && (!any || p->m.error < any->m.error)) any = p;
-            if (!any) throw kit::NumericalFailure("no method produced a finite solution");
-            scene.report.headline("best error of any method on " + any->scenario, any->m.error, any->time_s);
+            md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
+               << " | " << (std::isfinite(t) && std::isfinite(t_rk8pd) ? sci(t_rk8pd / t) : "—") << " | "
+               << sci(bp->m.orth) << " | " << sci(bp->m.dH) << " | " << sci(bp->m.dL) << " |\n";
+            summary.push_back({100.0 * si + mi, double(si), double(mi), bp->m.error, bp->time_s, t,
+                               std::isfinite(t) ? t_rk8pd / t : nan_, bp->m.orth, bp->m.dH, bp->m.dL});
+            if (sc.name == "grioli_100" && (!grioli_best || bp->m.error < grioli_best->m.error))
+                grioli_best = bp, grioli_best_method = methods[mi].label;
         }
-        // The right-hand side itself, on the first scenario run (Grioli's heavy top when it is there).
-        const bench::Scenario& rs = all.size() > 1 ? all[1] : all.front();
-        const bench::RhsCost cost = bench::rhs_cost(rs.top, rs.s0);
-        scene.report.add("rhs_scenario", rs.name, "the top whose right-hand side is timed");
-        scene.report.add("rhs_teaching_ns", cost.teaching_ns, "euler_poisson_rhs through OdeRhs, as GSL calls it (ns)");
-        scene.report.add("rhs_fast_ns", cost.fast_ns, "EulerPoissonInPlace through OdeRhsInPlace, as GSL calls it (ns)");
-        scene.report.add("rhs_plain_ns", cost.plain_ns, "a hand-written loop on std::array, called directly (ns)");
-        scene.report.add("rhs_fast_over_plain", cost.fast_ns / cost.plain_ns, "target: <= 1.5");
-        scene.report.add("rhs_teaching_over_plain", cost.teaching_ns / cost.plain_ns);
-        scene.report.add("rhs_fast_vs_teaching", cost.fast_vs_teaching, "largest difference / max |dy/dt|, 1000 random states");
-        scene.report.add("rhs_fast_vs_plain", cost.fast_vs_plain, "the same against the hand-written loop");
-        if (!(cost.fast_vs_teaching <= 1e-13 && cost.fast_vs_plain <= 1e-13))
-            throw kit::CheckFailed("the fast right-hand side and euler_poisson_rhs (or the plain loop) disagree by " +
-                                   std::to_string(std::max(cost.fast_vs_teaching, cost.fast_vs_plain)) +
-                                   " of |dy/dt|: the GSL methods of this benchmark would not integrate your equations");
-        scene.report.add("sweep", b.name);
-        scene.report.add("repeats", static_cast<long>(b.repeats));
-        scene.report.add("wall_time_s", progress.elapsed());
+        const std::string k = sc.name + "_";
+        scene.report.add(k + "reference_self_difference", ref.self_difference, "long-double reference vs itself at h/2");
+        scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
+        scene.report.add(k + "reference_time_s", ref.time_s);
+        scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
+        scene.report.add(k + "kappa", ref.kappa, "growth of a change of the initial state");
+        scene.report.add(k + "expected_floor", ref.expected_floor, "eps kappa sqrt(steps)");
+        scene.report.add(k + "fastest_at_target", fastest_name);
+        scene.report.add(k + "fastest_time_s", fastest);
+        scene.report.add(k + "rk8pd_time_s", t_rk8pd);
+        scene.report.add(k + "speedup_vs_rk8pd", t_rk8pd / fastest, "rk8pd run time / fastest run time at the target");
+        scene.report.add(k + "fastest_without_taylor", fastest_listed_name, "the same, leaving out the Taylor method");
+        scene.report.add(k + "fastest_without_taylor_time_s", fastest_listed);
+        scene.report.add(k + "speedup_without_taylor", t_rk8pd / fastest_listed);
+        md << "\nFastest to " << sci(target, 0) << ": " << fastest_name << " (" << sci(fastest) << " s, "
+           << (std::isfinite(t_rk8pd / fastest) ? sci(t_rk8pd / fastest, 2) : "—") << " times faster than rk8pd); "
+           << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
+    }
+    scene.report.table("by_method",
+                       {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s", "speedup_vs_rk8pd",
+                        "orthogonality", "energy_drift", "momentum_drift"},
+                       summary, false);
+    md << "\nMethods: ";
+    for (std::size_t mi = 0; mi < methods.size(); ++mi) md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
+    md << ". Scenarios: ";
+    for (std::size_t si = 0; si < all.size(); ++si) md << (si ? ", " : "") << si << " = " << all[si].name;
+    md << ".\n";
+    write_file(scene, "work_precision.md", md.str());
 
-        // The diagrams: one per scenario, a panel per family of methods (panels() above), all
-        // three on the same axes; rk8pd, the general-purpose favourite, is drawn grey in the
-        // panels it does not belong to, for comparison. Keys stand to the right of their panel.
-        const std::vector<Panel> by_family = panels(methods);
-        const int n_panels = static_cast<int>(by_family.size());
-        for (const bench::Scenario& sc : all) {
-            const int height_px = 280 * n_panels + 90;
-            kit::Figure fig(scene, "wp_" + sc.name + ".svg", 900, height_px);
-            if (!fig.enabled()) continue;
-            double t_min = 1e300, t_max = 0;
-            for (const bench::Method& m : methods)
+    if (grioli_best) {
+        const double floor = refs["grioli_100"].double_floor;
+        scene.report.headline("best method on Grioli over 100 periods (" + grioli_best_method +
+                                  "): angle between R and the long-double reference, and Omega relative",
+                              grioli_best->m.error, grioli_best->time_s);
+        scene.report.add("grioli_100_best_method", grioli_best_method);
+        scene.report.add("grioli_100_best_error", grioli_best->m.error);
+        scene.report.add("grioli_100_best_over_floor", grioli_best->m.error / floor, "target: <= 10");
+        // rk8pd's floor with GSL's driver and with the time kept as a two-part sum.
+        const bench::Point* plain = bench::best(points["grioli_100"]["rk8pd"]);
+        const bench::Point* compensated = bench::best(points["grioli_100"]["rk8pd_ct"]);
+        if (plain && compensated) {
+            scene.report.add("rk8pd_floor_gain", plain->m.error / compensated->m.error,
+                             "Grioli, 100 periods: rk8pd's best error, GSL's driver over compensated time");
+            scene.report.add("rk8pd_ct_over_floor", compensated->m.error / floor, "compensated rk8pd's best / the floor");
+        }
+    } else {
+        const bench::Point* any = nullptr;
+        for (const auto& [s, per] : points)
+            for (const auto& [m, pts] : per)
+                if (const bench::Point* p = bench::best(pts); p && (!any || p->m.error < any->m.error)) any = p;
+        if (!any) throw kit::NumericalFailure("no method produced a finite solution");
+        scene.report.headline("best error of any method on " + any->scenario, any->m.error, any->time_s);
+    }
+}
+
+// The right-hand side itself, on the first scenario run (Grioli's heavy top when it is there).
+void report_rhs_cost(kit::Scene& scene, const Sweeps& w) {
+    const auto& all = w.all;
+    const bench::Scenario& rs = all.size() > 1 ? all[1] : all.front();
+    const bench::RhsCost cost = bench::rhs_cost(rs.top, rs.s0);
+    scene.report.add("rhs_scenario", rs.name, "the top whose right-hand side is timed");
+    scene.report.add("rhs_teaching_ns", cost.teaching_ns, "euler_poisson_rhs through OdeRhs, as GSL calls it (ns)");
+    scene.report.add("rhs_fast_ns", cost.fast_ns, "EulerPoissonInPlace through OdeRhsInPlace, as GSL calls it (ns)");
+    scene.report.add("rhs_plain_ns", cost.plain_ns, "a hand-written loop on std::array, called directly (ns)");
+    scene.report.add("rhs_fast_over_plain", cost.fast_ns / cost.plain_ns, "target: <= 1.5");
+    scene.report.add("rhs_teaching_over_plain", cost.teaching_ns / cost.plain_ns);
+    scene.report.add("rhs_fast_vs_teaching", cost.fast_vs_teaching, "largest difference / max |dy/dt|, 1000 random states");
+    scene.report.add("rhs_fast_vs_plain", cost.fast_vs_plain, "the same against the hand-written loop");
+    if (!(cost.fast_vs_teaching <= 1e-13 && cost.fast_vs_plain <= 1e-13))
+        throw kit::CheckFailed("the fast right-hand side and euler_poisson_rhs (or the plain loop) disagree by " +
+                               std::to_string(std::max(cost.fast_vs_teaching, cost.fast_vs_plain)) +
+                               " of |dy/dt|: the GSL methods of this benchmark would not integrate your equations");
+    scene.report.add("sweep", w.b.name);
+    scene.report.add("repeats", static_cast<long>(w.b.repeats));
+    scene.report.add("wall_time_s", w.elapsed_s);
+}
+
+void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
+    const double target = w.target;
+    const auto& all = w.all;
+    const auto& methods = bench::methods();
+    auto refs = w.refs;
+    auto points = w.points;
+    // The diagrams: one per scenario, a panel per family of methods (panels() above), all
+    // three on the same axes; rk8pd, the general-purpose favourite, is drawn grey in the
+    // panels it does not belong to, for comparison. Keys stand to the right of their panel.
+    const std::vector<Panel> by_family = panels(methods);
+    const int n_panels = static_cast<int>(by_family.size());
+    for (const bench::Scenario& sc : all) {
+        const int height_px = 280 * n_panels + 90;
+        kit::Figure fig(scene, "wp_" + sc.name + ".svg", 900, height_px);
+        if (!fig.enabled()) continue;
+        double t_min = 1e300, t_max = 0;
+        for (const bench::Method& m : methods)
+            for (const bench::Point& p : points[sc.name][m.name])
+                if (!p.failed) t_min = std::min(t_min, p.time_s), t_max = std::max(t_max, p.time_s);
+        if (t_max <= 0) continue;
+        const double top = 1 - 50.0 / height_px, height = top - 55.0 / height_px;
+        fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") + "\n"
+               "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+               "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
+               "set xrange [" + sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) + "]\n"
+               "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
+               "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
+        const double floor = refs[sc.name].double_floor;
+        for (int k = 0; k < n_panels; ++k) {
+            const Panel& panel = by_family[k];
+            const double y1 = top - height * k / n_panels, y0 = top - height * (k + 1) / n_panels;
+            // The panels share the time axis: its numbers only under the last one.
+            fig << "set tmargin at screen " + std::to_string(y1 - 30.0 / height_px) + "\nset bmargin at screen " +
+                       std::to_string(y0 + 8.0 / height_px) + "\nset title " + kit::quoted(panel.title) +
+                       " font ',11' offset 0, -0.4\n" +
+                       (k + 1 == n_panels ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
+                                          : "unset xlabel\nset format x ''\n");
+            std::string plot = "plot ";
+            std::vector<std::vector<std::vector<double>>> blocks;
+            auto curve = [&](const bench::Method& m) {
+                std::vector<std::vector<double>> rows;
                 for (const bench::Point& p : points[sc.name][m.name])
-                    if (!p.failed) t_min = std::min(t_min, p.time_s), t_max = std::max(t_max, p.time_s);
-            if (t_max <= 0) continue;
-            const double top = 1 - 50.0 / height_px, height = top - 55.0 / height_px;
-            fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") + "\n"
-                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-                   "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
-                   "set xrange [" + sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) + "]\n"
-                   "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
-                   "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
-            const double floor = refs[sc.name].double_floor;
-            for (int k = 0; k < n_panels; ++k) {
-                const Panel& panel = by_family[k];
-                const double y1 = top - height * k / n_panels, y0 = top - height * (k + 1) / n_panels;
-                // The panels share the time axis: its numbers only under the last one.
-                fig << "set tmargin at screen " + std::to_string(y1 - 30.0 / height_px) + "\nset bmargin at screen " +
-                           std::to_string(y0 + 8.0 / height_px) + "\nset title " + kit::quoted(panel.title) +
-                           " font ',11' offset 0, -0.4\n" +
-                           (k + 1 == n_panels ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
-                                              : "unset xlabel\nset format x ''\n");
+                    if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
+                return rows;
+            };
+            bool has_rk8pd = false;
+            for (std::size_t i = 0; i < panel.methods.size(); ++i) {
+                const bench::Method& m = *panel.methods[i];
+                has_rk8pd = has_rk8pd || m.name == "rk8pd";
+                auto rows = curve(m);
+                // A method with no run that finished still has its line in the key.
+                plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
+                        kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
+                if (rows.empty()) rows.push_back({1e300, 1e300});
+                blocks.push_back(rows);
+            }
+            if (!has_rk8pd) {
+                auto rows = curve(bench::method("rk8pd"));
+                if (rows.empty()) rows.push_back({1e300, 1e300});
+                plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
+                blocks.push_back(rows);
+            }
+            plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
+                    sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
+            fig << plot;
+            for (const auto& rows : blocks) fig.data(rows);
+        }
+        fig << "unset multiplot\n";
+        fig.finish();
+    }
+}
+
+void draw_invariants(kit::Scene& scene, const Sweeps& w) {
+    auto points = w.points;
+    const std::vector<Panel> by_family = panels(bench::methods());
+    if (points.count("grioli_100")) {
+        // Every method in each panel, in the colour and marker of its work-precision panel; one
+        // key for the three panels, on their right.
+        kit::Figure fig(scene, "invariants_grioli_100.svg", 1400, 560);
+        if (fig.enabled()) {
+            fig << "set multiplot layout 1, 3 margins 0.06, 0.8, 0.11, 0.86 spacing 0.06, 0 "
+                   "title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
+                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
+                   "set yrange [1e-17:10]\n";
+            for (int panel = 0; panel < 3; ++panel) {
+                fig << (panel == 2 ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
+                                   : "unset key\n");
+                fig << (panel == 0   ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
+                        : panel == 1 ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
+                                     : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
                 std::string plot = "plot ";
                 std::vector<std::vector<std::vector<double>>> blocks;
-                auto curve = [&](const bench::Method& m) {
-                    std::vector<std::vector<double>> rows;
-                    for (const bench::Point& p : points[sc.name][m.name])
-                        if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
-                    return rows;
-                };
-                bool has_rk8pd = false;
-                for (std::size_t i = 0; i < panel.methods.size(); ++i) {
-                    const bench::Method& m = *panel.methods[i];
-                    has_rk8pd = has_rk8pd || m.name == "rk8pd";
-                    auto rows = curve(m);
-                    // A method with no run that finished still has its line in the key.
-                    plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
-                            kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
-                    if (rows.empty()) rows.push_back({1e300, 1e300});
-                    blocks.push_back(rows);
-                }
-                if (!has_rk8pd) {
-                    auto rows = curve(bench::method("rk8pd"));
-                    if (rows.empty()) rows.push_back({1e300, 1e300});
-                    plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
-                    blocks.push_back(rows);
-                }
-                plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
-                        sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
-                fig << plot;
+                for (const Panel& family : by_family)
+                    for (std::size_t i = 0; i < family.methods.size(); ++i) {
+                        const bench::Method& m = *family.methods[i];
+                        std::vector<std::vector<double>> rows;
+                        for (const bench::Point& p : points["grioli_100"][m.name])
+                            if (!p.failed)
+                                rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
+                        if (rows.empty()) continue;
+                        plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
+                        blocks.push_back(rows);
+                    }
+                plot.resize(plot.size() - 2);
+                fig << plot << "\n";
                 for (const auto& rows : blocks) fig.data(rows);
             }
             fig << "unset multiplot\n";
             fig.finish();
         }
-        if (points.count("grioli_100")) {
-            // Every method in each panel, in the colour and marker of its work-precision panel; one
-            // key for the three panels, on their right.
-            kit::Figure fig(scene, "invariants_grioli_100.svg", 1400, 560);
-            if (fig.enabled()) {
-                fig << "set multiplot layout 1, 3 margins 0.06, 0.8, 0.11, 0.86 spacing 0.06, 0 "
-                       "title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
-                       "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
-                       "set yrange [1e-17:10]\n";
-                for (int panel = 0; panel < 3; ++panel) {
-                    fig << (panel == 2 ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
-                                       : "unset key\n");
-                    fig << (panel == 0   ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
-                            : panel == 1 ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
-                                         : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
-                    std::string plot = "plot ";
-                    std::vector<std::vector<std::vector<double>>> blocks;
-                    for (const Panel& family : by_family)
-                        for (std::size_t i = 0; i < family.methods.size(); ++i) {
-                            const bench::Method& m = *family.methods[i];
-                            std::vector<std::vector<double>> rows;
-                            for (const bench::Point& p : points["grioli_100"][m.name])
-                                if (!p.failed)
-                                    rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
-                            if (rows.empty()) continue;
-                            plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
-                            blocks.push_back(rows);
-                        }
-                    plot.resize(plot.size() - 2);
-                    fig << plot << "\n";
-                    for (const auto& rows : blocks) fig.data(rows);
-                }
-                fig << "unset multiplot\n";
-                fig.finish();
-            }
-        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("work_precision", "Chapter 7: error against run time for every method and scenario");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
+        const Sweeps w = run_sweeps(o, p);
+        write_runs(scene, w);
+        write_summary(scene, w);
+        report_rhs_cost(scene, w);
+        draw_work_precision(scene, w);
+        draw_invariants(scene, w);
     });
 }

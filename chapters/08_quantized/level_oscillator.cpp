@@ -17,165 +17,236 @@
 
 using rigid::VecX;
 
-int main(int argc, char** argv) {
-    kit::Options opts("level_oscillator", "Chapter 8: the oscillator (6.1) settling onto discrete energy levels");
+namespace {
+
+// The scene's own parameters, bound to its options (the oscillator's are scene8's).
+struct Params {
+    double T = 200;
+    long outputs = 800, repeats = 3;
+};
+
+void declare(kit::Options& opts, Params& p) {
     scene8::oscillator_options(opts, 0.5, 2.0);
-    opts.real("T", 200, "time span", kit::between(1e-2, 1e6))
-        .integer("outputs", 800, "output times", 10, 100000)
-        .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
+    opts.real("T", &p.T, "time span", kit::between(1e-2, 1e6))
+        .integer("outputs", &p.outputs, "output times", 10, 100000)
+        .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
+}
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Oscillator osc = scene8::oscillator_from(o);
-        const rigid::LevelFriction k = scene8::friction_from(o);
-        const double T = o.real("T"), E0 = k.E0, w = osc.omega / std::sqrt(osc.m);
-        const int repeats = static_cast<int>(o.integer("repeats"));
-        const auto times = rigid::linspace(0, T, static_cast<int>(o.integer("outputs")));
-        // The work: the motion on a level and six between levels (`repeats` timed runs each), six
-        // averaged ones, over T; and 50 periods for the period. The phase turned sets the steps.
-        kit::require_budget(o, {(7.0 * repeats + 6) * T * w + 50 * 2 * std::numbers::pi, scene8::seconds_per_radian,
-                                "radians of phase", "--T, --omega, --m, --repeats"});
-        kit::require_budget(o, {(7.0 * repeats + 6) * double(times.size()), 4e-6, "output times (all runs)", "--outputs, --repeats"});
-        const rigid::OdeSettings tight{.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12};
+struct Setup {
+    rigid::Oscillator osc;
+    rigid::LevelFriction k;
+    double T, w;  // w = omega / sqrt(m), the natural frequency
+    int repeats;
+    std::vector<double> times;
+};
 
-        // 1. On a level, (6.1) is m q'' + omega^2 q = 0: exact reference q0 cos(w t), w = omega / sqrt(m).
-        const double E_on = 2 * E0;
-        const VecX y_on = scene8::at_energy(osc, E_on);
-        const rigid::OdeRhs f = rigid::oscillator_equations(osc, k);
-        scene8::Run on;
-        const double on_time = kit::min_time([&] { on = scene8::integrate(f, y_on, times, "rk8pd", 1e-12); }, repeats);
-        double on_err = 0, on_drift = 0, naive_err = 0;
+Setup setup(const kit::Options& o, const Params& p) {
+    Setup u{scene8::oscillator_from(o), scene8::friction_from(o), p.T, 0, static_cast<int>(p.repeats),
+            rigid::linspace(0, p.T, static_cast<int>(p.outputs))};
+    u.w = u.osc.omega / std::sqrt(u.osc.m);
+    // The work: the motion on a level and six between levels (`repeats` timed runs each), six
+    // averaged ones, over T; and 50 periods for the period. The phase turned sets the steps.
+    kit::require_budget(o, {(7.0 * u.repeats + 6) * u.T * u.w + 50 * 2 * std::numbers::pi, scene8::seconds_per_radian,
+                            "radians of phase", "--T, --omega, --m, --repeats"});
+    kit::require_budget(o, {(7.0 * u.repeats + 6) * double(u.times.size()), 4e-6, "output times (all runs)",
+                            "--outputs, --repeats"});
+    return u;
+}
+
+// 1. A motion on a level, against the exact harmonic motion; then its period.
+void report_on_level(kit::Report& report, const Setup& u) {
+    const rigid::Oscillator& osc = u.osc;
+    const rigid::LevelFriction& k = u.k;
+    const double E0 = u.k.E0, w = u.w;
+    const int repeats = u.repeats;
+    const auto& times = u.times;
+    const rigid::OdeSettings tight{.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12};
+    // On a level, (6.1) is m q'' + omega^2 q = 0: exact reference q0 cos(w t), w = omega / sqrt(m).
+    const double E_on = 2 * E0;
+    const VecX y_on = scene8::at_energy(osc, E_on);
+    const rigid::OdeRhs f = rigid::oscillator_equations(osc, k);
+    scene8::Run on;
+    const double on_time = kit::min_time([&] { on = scene8::integrate(f, y_on, times, "rk8pd", 1e-12); }, repeats);
+    double on_err = 0, on_drift = 0, naive_err = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const double t = times[i], q0 = y_on(0);
+        on_err = std::max({on_err, std::abs(on.y[i](0) - q0 * std::cos(w * t)) / q0,
+                           std::abs(on.y[i](1) + q0 * w * std::sin(w * t)) / (q0 * w)});
+        naive_err = std::max(naive_err, std::abs(on.y[i](0) - q0 * std::cos(osc.omega * t)) / q0);
+        on_drift = std::max(on_drift, std::abs(rigid::oscillator_energy(osc, on.y[i](0), on.y[i](1)) - E_on) / E_on);
+    }
+    report.headline("a motion started on the level E = 2 E0, rk8pd at tol 1e-12, against the exact harmonic "
+                          "motion q0 cos(omega t / sqrt(m)): max relative error of q and q'",
+                          on_err, on_time);
+    report.add("on_level_energy_drift", on_drift, "max |E(t) - 2 E0| / (2 E0) on the level");
+    report.add("error_if_frequency_were_omega", naive_err, "the same motion against q0 cos(omega t)");
+
+// The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
+    const auto fine = rigid::linspace(0, 50 * 2 * std::numbers::pi / w, 20000);
+    std::vector<double> crossings;
+    double tp = 0, qp = y_on(0);
+    rigid::integrate_gsl(f, y_on, fine, [&](double t, const VecX& y) {
+        if (t > 0 && (qp < 0) != (y(0) < 0)) crossings.push_back(tp + (t - tp) * qp / (qp - y(0)));
+        tp = t, qp = y(0);
+    }, tight);
+    if (crossings.size() < 3) throw kit::NumericalFailure("too few zero crossings to measure the period");
+    const double period = 2 * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+    report.add("period_measured", period, "from the zero crossings of q on the level");
+    report.add("period_predicted", 2 * std::numbers::pi * std::sqrt(osc.m) / osc.omega,
+                     "2 pi sqrt(m) / omega");
+    report.add("period_if_frequency_were_omega", 2 * std::numbers::pi / osc.omega);
+    report.add("period_mismatch", std::abs(period * osc.omega / (2 * std::numbers::pi * std::sqrt(osc.m)) - 1),
+                     "relative, measured against 2 pi sqrt(m) / omega");
+}
+
+// 2. Motions started between the levels, with the work of friction alongside.
+struct Settling {
+    std::vector<double> starts{0.45, 1.3, 1.9, 2.5, 3.2, 3.9};
+    std::vector<std::vector<double>> rows;  // E(0)/E0, level/E0, E(T)/E0, d(T), d_avg(T), ratio, min(E - level)
+    std::vector<std::vector<std::vector<double>>> curves, averaged, approach, asymptote;
+    double balance = 0, settle_time = 0;
+};
+
+Settling settle(const Setup& u) {
+    const rigid::Oscillator& osc = u.osc;
+    const rigid::LevelFriction& k = u.k;
+    const double E0 = u.k.E0;
+    const int repeats = u.repeats;
+    const auto& times = u.times;
+    Settling S;
+    const auto& starts = S.starts;
+    auto& rows = S.rows;
+    auto &curves = S.curves, &averaged = S.averaged, &approach = S.approach, &asymptote = S.asymptote;
+    auto &balance = S.balance, &settle_time = S.settle_time;
+    for (double s : starts) {
+        const double E_start = s * E0, level = rigid::level_below(k, E_start);
+        const VecX y0{{scene8::at_energy(osc, E_start)(0), 0.0, 0.0}};
+        scene8::Run run;
+        settle_time += kit::min_time([&] { run = scene8::integrate(scene8::with_work(osc, k), y0, times, "rk8pd", 1e-12); },
+                                     repeats);
+        const scene8::Run avg = scene8::integrate(scene8::averaged_energy(osc, k), VecX{{E_start}}, times, "rk8pd", 1e-12);
+        std::vector<std::vector<double>> c, a, d, as;
+        double min_above = 1e300;
+        const double rate = scene8::level_rate(osc, k, level);
         for (std::size_t i = 0; i < times.size(); ++i) {
-            const double t = times[i], q0 = y_on(0);
-            on_err = std::max({on_err, std::abs(on.y[i](0) - q0 * std::cos(w * t)) / q0,
-                               std::abs(on.y[i](1) + q0 * w * std::sin(w * t)) / (q0 * w)});
-            naive_err = std::max(naive_err, std::abs(on.y[i](0) - q0 * std::cos(osc.omega * t)) / q0);
-            on_drift = std::max(on_drift, std::abs(rigid::oscillator_energy(osc, on.y[i](0), on.y[i](1)) - E_on) / E_on);
-        }
-        scene.report.headline("a motion started on the level E = 2 E0, rk8pd at tol 1e-12, against the exact harmonic "
-                              "motion q0 cos(omega t / sqrt(m)): max relative error of q and q'",
-                              on_err, on_time);
-        scene.report.add("on_level_energy_drift", on_drift, "max |E(t) - 2 E0| / (2 E0) on the level");
-        scene.report.add("error_if_frequency_were_omega", naive_err, "the same motion against q0 cos(omega t)");
-
-        // The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
-        {
-            const auto fine = rigid::linspace(0, 50 * 2 * std::numbers::pi / w, 20000);
-            std::vector<double> crossings;
-            double tp = 0, qp = y_on(0);
-            rigid::integrate_gsl(f, y_on, fine, [&](double t, const VecX& y) {
-                if (t > 0 && (qp < 0) != (y(0) < 0)) crossings.push_back(tp + (t - tp) * qp / (qp - y(0)));
-                tp = t, qp = y(0);
-            }, tight);
-            if (crossings.size() < 3) throw kit::NumericalFailure("too few zero crossings to measure the period");
-            const double period = 2 * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
-            scene.report.add("period_measured", period, "from the zero crossings of q on the level");
-            scene.report.add("period_predicted", 2 * std::numbers::pi * std::sqrt(osc.m) / osc.omega,
-                             "2 pi sqrt(m) / omega");
-            scene.report.add("period_if_frequency_were_omega", 2 * std::numbers::pi / osc.omega);
-            scene.report.add("period_mismatch", std::abs(period * osc.omega / (2 * std::numbers::pi * std::sqrt(osc.m)) - 1),
-                             "relative, measured against 2 pi sqrt(m) / omega");
-        }
-
-        // 2. Motions started between the levels, with the work of friction alongside.
-        const std::vector<double> starts{0.45, 1.3, 1.9, 2.5, 3.2, 3.9};
-        std::vector<std::vector<double>> rows;  // E(0)/E0, level/E0, E(T)/E0, d(T), d_avg(T), ratio, min(E - level)
-        std::vector<std::vector<std::vector<double>>> curves, averaged, approach, asymptote;
-        double balance = 0;
-        double settle_time = 0;
-        for (double s : starts) {
-            const double E_start = s * E0, level = rigid::level_below(k, E_start);
-            const VecX y0{{scene8::at_energy(osc, E_start)(0), 0.0, 0.0}};
-            scene8::Run run;
-            settle_time += kit::min_time([&] { run = scene8::integrate(scene8::with_work(osc, k), y0, times, "rk8pd", 1e-12); },
-                                         repeats);
-            const scene8::Run avg = scene8::integrate(scene8::averaged_energy(osc, k), VecX{{E_start}}, times, "rk8pd", 1e-12);
-            std::vector<std::vector<double>> c, a, d, as;
-            double min_above = 1e300;
-            const double rate = scene8::level_rate(osc, k, level);
-            for (std::size_t i = 0; i < times.size(); ++i) {
-                const double E = rigid::oscillator_energy(osc, run.y[i](0), run.y[i](1));
-                if (!std::isfinite(E)) throw kit::NumericalFailure("the energy is not finite at t = " + std::to_string(times[i]));
-                balance = std::max(balance, std::abs(E + run.y[i](2) - E_start) / E_start);
-                min_above = std::min(min_above, E - level);
-                c.push_back({times[i], E / E0});
-                a.push_back({times[i], avg.y[i](0) / E0});
-                if (times[i] >= 1) {
-                    d.push_back({times[i], std::max(E - level, 1e-300) / E0});
-                    // The asymptote of the averaged equation: (p - 1) c t for p > 1 (E_n > 0), or,
-                    // on the ground level, E^-p = p kappa (pi/E0)^p t / m.
-                    const double x = level > 0
-                                         ? std::pow((k.power - 1) * rate * times[i], -1 / (k.power - 1))
-                                         : std::pow(k.power * k.kappa * std::pow(std::numbers::pi / E0, k.power) * times[i] / osc.m,
-                                                    -1 / k.power);
-                    if (k.power > 1 || level == 0) as.push_back({times[i], x / E0});
-                }
+            const double E = rigid::oscillator_energy(osc, run.y[i](0), run.y[i](1));
+            if (!std::isfinite(E)) throw kit::NumericalFailure("the energy is not finite at t = " + std::to_string(times[i]));
+            balance = std::max(balance, std::abs(E + run.y[i](2) - E_start) / E_start);
+            min_above = std::min(min_above, E - level);
+            c.push_back({times[i], E / E0});
+            a.push_back({times[i], avg.y[i](0) / E0});
+            if (times[i] >= 1) {
+                d.push_back({times[i], std::max(E - level, 1e-300) / E0});
+                // The asymptote of the averaged equation: (p - 1) c t for p > 1 (E_n > 0), or,
+                // on the ground level, E^-p = p kappa (pi/E0)^p t / m.
+                const double x = level > 0
+                                     ? std::pow((k.power - 1) * rate * times[i], -1 / (k.power - 1))
+                                     : std::pow(k.power * k.kappa * std::pow(std::numbers::pi / E0, k.power) * times[i] / osc.m,
+                                                -1 / k.power);
+                if (k.power > 1 || level == 0) as.push_back({times[i], x / E0});
             }
-            const double ET = rigid::oscillator_energy(osc, run.y.back()(0), run.y.back()(1));
-            const double dT = ET - level, dA = avg.y.back()(0) - level;
-            rows.push_back({s, level / E0, ET / E0, dT, dA, dT / dA, min_above});
-            curves.push_back(c), averaged.push_back(a), approach.push_back(d), asymptote.push_back(as);
         }
-        scene.report.add("energy_balance", balance, "max |E(t) + W(t) - E(0)| / E(0) over the six motions");
-        scene.report.add("settling_run_time_s", settle_time, "the six motions with W, rk8pd at 1e-12");
-        scene.report.add("T", T);
-        scene.report.add("natural_frequency", w, "omega / sqrt(m)");
-        scene.report.table("settling",
-                           {"E_start_over_E0", "level_over_E0", "E_T_over_E0", "above_level_T", "averaged_above_level_T",
-                            "ratio", "min_above_level"},
-                           rows);
-        double worst_ratio = 0, lowest = 1e300;
-        for (const auto& r : rows) {
-            if (r[1] > 0) worst_ratio = std::max(worst_ratio, std::abs(r[5] - 1));
-            lowest = std::min(lowest, r[6]);
-        }
-        scene.report.add("averaged_mismatch_at_T", worst_ratio,
-                         "max |(E(T) - E_n) / (averaged E(T) - E_n) - 1| over the motions that settle on E_n > 0");
-        scene.report.add("min_above_level", lowest, "min over t of E(t) - level: never below the level it settles onto");
-        if (lowest < 0) scene.report.note("a motion went below the level it should settle onto");
+        const double ET = rigid::oscillator_energy(osc, run.y.back()(0), run.y.back()(1));
+        const double dT = ET - level, dA = avg.y.back()(0) - level;
+        rows.push_back({s, level / E0, ET / E0, dT, dA, dT / dA, min_above});
+        curves.push_back(c), averaged.push_back(a), approach.push_back(d), asymptote.push_back(as);
+    }
+    return S;
+}
 
-        const int levels = static_cast<int>(std::ceil(starts.back()));
-        kit::Figure fig(scene, "level_settling.svg", 820, 520);
-        if (fig.enabled()) {
-            char head[160];
-            std::snprintf(head, sizeof head, "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
-                          k.kappa, k.power);
-            std::string cmd = std::string(head) + "set xrange [0:" + std::to_string(std::min(T, 40.0)) +
-                              "]\nset xlabel 't'\nset ylabel 'E / E_{0}'\nset key outside right top font ',9'\n"
-                              "set yrange [0:" + std::to_string(levels + 0.2) + "]\n";
-            for (int n = 0; n <= levels; ++n)
-                cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
-                       " nohead dt 3 lc rgb '#999999'\n";
-            cmd += "plot ";
-            for (std::size_t j = 0; j < starts.size(); ++j) {
-                char title[64];
-                std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}", starts[j]);
-                cmd += "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "', ";
-            }
-            cmd += "'-' with lines lc rgb 'black' dt 2 lw 1 title 'averaged: dE/dt = -k(E) E/m'";
-            for (std::size_t j = 1; j < starts.size(); ++j) cmd += ", '-' with lines lc rgb 'black' dt 2 lw 1 notitle";
-            fig << cmd + "\n";
-            for (const auto& c : curves) fig.data(c);
-            for (const auto& a : averaged) fig.data(a);
-            fig.finish();
-        }
+void report_settling(kit::Report& report, const Setup& u, const Settling& S) {
+    report.add("energy_balance", S.balance, "max |E(t) + W(t) - E(0)| / E(0) over the six motions");
+    report.add("settling_run_time_s", S.settle_time, "the six motions with W, rk8pd at 1e-12");
+    const double T = u.T, w = u.w;
+    const auto& rows = S.rows;
+    report.add("T", T);
+    report.add("natural_frequency", w, "omega / sqrt(m)");
+    report.table("settling",
+                       {"E_start_over_E0", "level_over_E0", "E_T_over_E0", "above_level_T", "averaged_above_level_T",
+                        "ratio", "min_above_level"},
+                       rows);
+    double worst_ratio = 0, lowest = 1e300;
+    for (const auto& r : rows) {
+        if (r[1] > 0) worst_ratio = std::max(worst_ratio, std::abs(r[5] - 1));
+        lowest = std::min(lowest, r[6]);
+    }
+    report.add("averaged_mismatch_at_T", worst_ratio,
+                     "max |(E(T) - E_n) / (averaged E(T) - E_n) - 1| over the motions that settle on E_n > 0");
+    report.add("min_above_level", lowest, "min over t of E(t) - level: never below the level it settles onto");
+    if (lowest < 0) report.note("a motion went below the level it should settle onto");
 
-        kit::Figure fa(scene, "level_approach.svg", 820, 520);
-        if (fa.enabled()) {
-            std::string cmd = "set title 'Approach to the levels: E(t) - E_{n}\u00a0(solid), the averaged asymptote (dashed)'\n"
-                              "set xrange [1:" + std::to_string(T) + "]\nset logscale xy\nset format y '10^{%L}'\nset xlabel 't'\nset ylabel '(E - E_{n}) / E_{0}'\n"
-                              "set key outside right top font ',9'\nplot ";
-            for (std::size_t j = 0; j < starts.size(); ++j) {
-                char title[64];
-                std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}\u00a0settles on %g E_{0}", starts[j], rows[j][1]);
-                cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "'";
-            }
-            for (std::size_t j = 0; j < starts.size(); ++j)
-                if (!asymptote[j].empty()) cmd += ", '-' with lines ls " + std::to_string(j + 1) + " dt 2 lw 1 notitle";
-            fa << cmd + "\n";
-            for (const auto& d : approach) fa.data(d);
-            for (const auto& as : asymptote)
-                if (!as.empty()) fa.data(as);
-            fa.finish();
+}
+
+void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
+    const rigid::LevelFriction& k = u.k;
+    const double T = u.T;
+    const auto& starts = S.starts;
+    const int levels = static_cast<int>(std::ceil(starts.back()));
+    const auto &curves = S.curves, &averaged = S.averaged;
+    kit::Figure fig(scene, "level_settling.svg", 820, 520);
+    if (fig.enabled()) {
+        char head[160];
+        std::snprintf(head, sizeof head, "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
+                      k.kappa, k.power);
+        std::string cmd = std::string(head) + "set xrange [0:" + std::to_string(std::min(T, 40.0)) +
+                          "]\nset xlabel 't'\nset ylabel 'E / E_{0}'\nset key outside right top font ',9'\n"
+                          "set yrange [0:" + std::to_string(levels + 0.2) + "]\n";
+        for (int n = 0; n <= levels; ++n)
+            cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
+                   " nohead dt 3 lc rgb '#999999'\n";
+        cmd += "plot ";
+        for (std::size_t j = 0; j < starts.size(); ++j) {
+            char title[64];
+            std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}", starts[j]);
+            cmd += "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "', ";
         }
+        cmd += "'-' with lines lc rgb 'black' dt 2 lw 1 title 'averaged: dE/dt = -k(E) E/m'";
+        for (std::size_t j = 1; j < starts.size(); ++j) cmd += ", '-' with lines lc rgb 'black' dt 2 lw 1 notitle";
+        fig << cmd + "\n";
+        for (const auto& c : curves) fig.data(c);
+        for (const auto& a : averaged) fig.data(a);
+        fig.finish();
+    }
+
+}
+
+void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
+    const double T = u.T;
+    const auto& starts = S.starts;
+    const auto& rows = S.rows;
+    const auto &approach = S.approach, &asymptote = S.asymptote;
+    kit::Figure fa(scene, "level_approach.svg", 820, 520);
+    if (fa.enabled()) {
+        std::string cmd = "set title 'Approach to the levels: E(t) - E_{n}\u00a0(solid), the averaged asymptote (dashed)'\n"
+                          "set xrange [1:" + std::to_string(T) + "]\nset logscale xy\nset format y '10^{%L}'\nset xlabel 't'\nset ylabel '(E - E_{n}) / E_{0}'\n"
+                          "set key outside right top font ',9'\nplot ";
+        for (std::size_t j = 0; j < starts.size(); ++j) {
+            char title[64];
+            std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}\u00a0settles on %g E_{0}", starts[j], rows[j][1]);
+            cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "'";
+        }
+        for (std::size_t j = 0; j < starts.size(); ++j)
+            if (!asymptote[j].empty()) cmd += ", '-' with lines ls " + std::to_string(j + 1) + " dt 2 lw 1 notitle";
+        fa << cmd + "\n";
+        for (const auto& d : approach) fa.data(d);
+        for (const auto& as : asymptote)
+            if (!as.empty()) fa.data(as);
+        fa.finish();
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("level_oscillator", "Chapter 8: the oscillator (6.1) settling onto discrete energy levels");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
+        const Setup u = setup(o, p);
+        report_on_level(scene.report, u);
+        const Settling settling = settle(u);
+        report_settling(scene.report, u, settling);
+        draw_settling(scene, u, settling);
+        draw_approach(scene, u, settling);
     });
 }

@@ -13,6 +13,7 @@
 #include "rigid/ode.hpp"
 #include "rigid/quantized.hpp"
 #include "scene.hpp"
+#include "sweep.hpp"
 
 namespace scene8 {
 
@@ -30,12 +31,7 @@ inline Run integrate(const rigid::OdeRhs& f, const VecX& y0, const std::vector<d
     Run run;
     run.y.reserve(times.size());
     const auto observe = [&](double, const VecX& y) { run.y.push_back(y); };
-    if (method == "rk4") {
-        run.work = 4 * rigid::integrate_rk4(f, y0, times, observe, h_or_tol);
-    } else {
-        run.work = rigid::integrate_gsl(f, y0, times, observe, {.method = method, .rel_tol = h_or_tol, .abs_tol = h_or_tol})
-                       .rhs_calls;
-    }
+    run.work = kit::integrate_by_name(f, y0, times, observe, method, h_or_tol);
     return run;
 }
 

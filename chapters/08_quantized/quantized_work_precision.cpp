@@ -77,20 +77,13 @@ int main(int argc, char** argv) {
                     },
                     [&](std::size_t, const VecX& y) { return std::abs(rigid::oscillator_energy(osc, y(0), y(1)) - E_on) / E_on; }}};
 
-        struct Case {
-            std::string method;
-            double param;
-        };
-        std::vector<Case> cases;
-        for (double h : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001}) cases.push_back({"rk4", h});
-        for (int e = 4; e <= 13; ++e) cases.push_back({"rkf45", std::pow(10.0, -e)});
-        for (int e = 4; e <= 14; ++e) cases.push_back({"rk8pd", std::pow(10.0, -e)});
+        const std::vector<kit::SweepCase> cases = kit::rk4_rkf45_rk8pd_sweep();
 
         std::vector<std::vector<double>> rows;  // problem, method, param, time, rhs calls, error, drift
         double head_err = 0, head_time = 0;
         for (std::size_t p = 0; p < problems.size(); ++p) {
             const Problem& pr = problems[p];
-            for (const Case& c : cases) {
+            for (const kit::SweepCase& c : cases) {
                 scene8::Run run;
                 const double t = kit::min_time([&] { run = scene8::integrate(pr.f, pr.y0, times, c.method, c.param); }, repeats);
                 double err = 0, drift = 0;
@@ -99,7 +92,7 @@ int main(int argc, char** argv) {
                     drift = std::max(drift, pr.drift(i, run.y[i]));
                 }
                 if (!std::isfinite(err)) throw kit::NumericalFailure(pr.name + ": " + c.method + " gave a non-finite state");
-                const double id = c.method == "rk4" ? 0 : c.method == "rkf45" ? 1 : 2;
+                const double id = kit::sweep_method_id(c.method);
                 rows.push_back({double(p), id, c.param, t, double(run.work), err, drift});
                 if (p == 0 && c.method == "rk8pd" && c.param == 1e-12) head_err = err, head_time = t;
             }
