@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
               "set offsets graph 0.15, graph 0.15, graph 0.3, graph 0.3\n"
               "plot '-' using 1:2 with linespoints ls 1 title 'central, orders 2-8', "
               "'-' using 1:2 with points ls 2 ps 1.2 title 'forward, order 1', "
-              "'-' using 1:2:3 with labels offset 1.2, 0.8 notitle\n";
+              "'-' using 1:2:(sprintf('%d', $3)) with labels offset 1.2, 0.8 notitle\n";
         std::vector<std::vector<double>> central;
         for (std::size_t s = 1; s < stencils.size(); ++s) central.push_back({1e9 * time_per[s], best_err[s]});
         wp.data(central).data({{1e9 * time_per[0], best_err[0]}});

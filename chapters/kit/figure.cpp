@@ -100,16 +100,12 @@ Figure& Figure::operator<<(const std::string& commands) {
     return *this;
 }
 
+// gnuplot-iostream's send1d writes one line per row (every number with 19 significant digits,
+// so gnuplot reads back the very doubles), a blank line for an empty row, and the closing 'e'.
+// A number shown as text (`with labels`) must therefore be formatted by gnuplot itself, e.g.
+// `using 1:2:(sprintf('%d', $3))`.
 Figure& Figure::data(const std::vector<std::vector<double>>& rows) {
-    if (!gp_) return *this;
-    std::ostringstream block;
-    block.precision(17);
-    for (const auto& row : rows) {
-        for (std::size_t i = 0; i < row.size(); ++i) block << (i ? " " : "") << row[i];
-        block << "\n";
-    }
-    block << "e\n";
-    *gp_ << block.str();
+    if (gp_) gp_->send1d(rows);
     return *this;
 }
 

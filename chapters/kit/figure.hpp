@@ -1,4 +1,5 @@
-// Headless figures through gnuplot-iostream, done one way everywhere.
+// Headless figures through gnuplot-iostream (its pipe, and its send1d for the data), done one
+// way everywhere.
 //
 //   kit::Figure fig(scene, "omega_error.svg");
 //   fig << "set logscale xy\n" << "plot '-' using 1:2 with lines title 'central'\n";
@@ -39,8 +40,10 @@ public:
 
     bool enabled() const { return static_cast<bool>(gp_); }
     Figure& operator<<(const std::string& commands);
-    // One inline data block for a `plot '-'` or `splot '-'`: one line per row; an empty
-    // row makes a blank line (a break between line segments or a new splot curve).
+    // One inline data block for a `plot '-'` or `splot '-'`, sent with gnuplot-iostream's
+    // send1d: one line per row; an empty row makes a blank line (a break between line segments
+    // or a new splot curve). Numbers go out in full precision, so a label taken from the data
+    // must be formatted in gnuplot: `using 1:2:(sprintf('%d', $3)) with labels`.
     Figure& data(const std::vector<std::vector<double>>& rows);
     void finish();
 
