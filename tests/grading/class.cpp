@@ -309,7 +309,7 @@ int make(const Args& a) {
     double full = 0;
     for (const auto& e : topic->exercises) exercises.push_back(e.name), full += e.points;
     const std::string reference = read_file(setup.root + "/solutions/" + kTopic + ".cpp");
-    const std::string stub = read_file(setup.root + "/exercises/" + kTopic + ".cpp");
+    const std::string stub = read_file(pristine_stub(setup, kTopic));
     std::vector<Member> members = planted(reference, stub, exercises, full);
     for (auto& m : others(setup, stub, exercises, full)) members.push_back(m);
     if (a.size == 10) {  // a smaller class, one of each kind that matters to the report

@@ -134,6 +134,8 @@ std::string make_api(const std::string& topic, const std::string& nm, const std:
 // Reads <dir>/topics.txt and <dir>/manifest.txt. Returns an empty string or the error.
 std::string load_setup(const std::string& dir, Setup& setup);
 const Chapter* find_chapter(const Setup& setup, const std::string& label);
+// The topic's stub as committed, never the student's edited file (pristine.cpp).
+std::string pristine_stub(const Setup& setup, const std::string& topic);
 std::string relative_to_root(const Setup& setup, std::string text);
 
 // ---- grading one submission (grade.cpp) ------------------------------------------------------

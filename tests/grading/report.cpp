@@ -3,6 +3,7 @@
 #include <map>
 
 #include "grading.hpp"
+#include "hints.hpp"
 
 namespace grading {
 
@@ -123,18 +124,11 @@ std::string class_summary(const Setup& setup, const std::vector<SubmissionResult
     return out;
 }
 
+// Hint 1 of the exercise's ladder, as the terminal shows it (hints.cpp).
 std::string hint_for(const Setup& setup, const std::string& exercise) {
-    std::string hint;
-    bool in = false;
-    for (const auto& line : split(read_file(setup.root + "/exercises/hints.md"), '\n')) {
-        if (starts_with(line, "#")) {
-            if (in) break;
-            in = trim(line) == "### " + exercise;
-            continue;
-        }
-        if (in) hint += line + "\n";
-    }
-    return trim(hint);
+    const hints::Hints h = hints::read(setup.root + "/exercises/hints.md");
+    const hints::Ladder* ladder = h.error.empty() ? hints::find(h, exercise) : nullptr;
+    return ladder ? hints::for_terminal(*ladder, 1) : h.error.empty() ? "" : "\n" + h.error + "\n";
 }
 
 bool print_check(const Setup& setup, const SubmissionResult& r, const std::string& folder) {
@@ -211,11 +205,11 @@ bool print_check(const Setup& setup, const SubmissionResult& r, const std::strin
             for (const auto& line : split(t.output, '\n')) std::printf("    %s\n", line.c_str());
         }
     }
-    const std::string hint = hint_for(setup, first->exercise);
-    if (!hint.empty()) {
-        std::printf("\nHint (exercises/hints.md, %s):\n", first->exercise.c_str());
-        for (const auto& line : split(hint, '\n')) std::printf("  %s\n", line.c_str());
-    }
+    // A nudge (Hint 1) only for an exercise the student has started; the next rungs on request.
+    if (first->status == "not started")
+        std::printf("  a hint when you want one: cmake/workbook check %s --hint 1\n", first->exercise.c_str());
+    else
+        std::printf("%s", hint_for(setup, first->exercise).c_str());
     if (all_total > 1)
         std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", all_pass, all_total,
                     first->exercise.c_str());

@@ -433,7 +433,7 @@ std::vector<SimilarityHit> find_similar(const Setup& setup, const std::vector<Cl
         const Topic& topic = setup.topics[k];
         std::set<std::string> api;
         for (const auto& e : topic.exercises) api.insert(e.name);
-        const std::set<std::uint64_t> base = base_hashes(read_file(setup.root + "/exercises/" + topic.name + ".cpp"), api);
+        const std::set<std::uint64_t> base = base_hashes(read_file(pristine_stub(setup, topic.name)), api);
         std::vector<Candidate> candidates;
         bool ok = false;
         const std::string reference = read_file(setup.root + "/solutions/" + topic.name + ".cpp", &ok);
