@@ -199,7 +199,7 @@ TEST_CASE("wobble_frequency_squared: equals -lambda^2 of Euler's equation linear
     }
 }
 
-TEST_CASE("wobble_frequency_squared: stable about the largest and smallest axes, unstable about the middle one") {
+TEST_CASE("wobble_frequency_squared: stable about the largest and smallest axes and unstable about the middle one") {
     const Vec3 I(1.0, 2.0, 3.0);
     CHECK(rigid::wobble_frequency_squared(I, 0, 1.0) > 0.1);
     CHECK(rigid::wobble_frequency_squared(I, 2, 1.0) > 0.1);
@@ -220,7 +220,7 @@ TEST_CASE("wobble_frequency_squared: stable about the largest and smallest axes,
     CHECK_NEAR(std::sqrt(-rigid::wobble_frequency_squared(I, 1, 1.0)), growth, 1e-3);
 }
 
-TEST_CASE("wobble_frequency_squared: rejects moments that are no body, a bad axis, a non-finite spin") {
+TEST_CASE("wobble_frequency_squared: rejects moments that are no body or a bad axis or a non-finite spin") {
     CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 1, 3), 0, 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(-1, 2, 2), 0, 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 3, 1.0), std::invalid_argument);
@@ -233,15 +233,15 @@ TEST_CASE("wobble_frequency_squared: rejects moments that are no body, a bad axi
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch03_free_body") {
 
-TEST_CASE("rotational_energy: E = 3 for I = (2, 3, 4), Omega = (1, 0, 1), the worked example of Chapter 3") {
+TEST_CASE("rotational_energy: E = 3 for I = (2; 3; 4) and Omega = (1; 0; 1) in the worked example of Chapter 3") {
     CHECK_NEAR(rigid::rotational_energy(Vec3(2, 3, 4), Vec3(1, 0, 1)), 3.0, 1e-15);
 }
 
-TEST_CASE("angular_momentum_squared: M^2 = 20, the worked example of Chapter 3") {
+TEST_CASE("angular_momentum_squared: M^2 = 20 in the worked example of Chapter 3") {
     CHECK_NEAR(rigid::angular_momentum_squared(Vec3(2, 3, 4), Vec3(1, 0, 1)), 20.0, 1e-14);
 }
 
-TEST_CASE("euler_rhs: dOmega/dt = (0, 2/3, 0), the worked example of Chapter 3") {
+TEST_CASE("euler_rhs: dOmega/dt = (0; 2/3; 0) in the worked example of Chapter 3") {
     CHECK_MAT_NEAR(rigid::euler_rhs(Vec3(2, 3, 4), Vec3(1, 0, 1)), Vec3(0, 2.0 / 3, 0), 1e-15);
 }
 

@@ -435,7 +435,7 @@ double largest_growth_rate(double A, double C, double f, double omega) {
 
 TEST_SUITE("ch04_heavy_top") {
 
-TEST_CASE("sleeping_top_min_spin: unstable just below it, stable just above it") {
+TEST_CASE("sleeping_top_min_spin: unstable just below it and stable just above it") {
     for (int n = 0; n < 20; ++n) {
         const double A = checks::uniform(0.5, 3), C = checks::uniform(0.2, 2) * A, f = checks::uniform(0.1, 5);
         CAPTURE(A);
@@ -449,7 +449,7 @@ TEST_CASE("sleeping_top_min_spin: unstable just below it, stable just above it")
     }
 }
 
-TEST_CASE("sleeping_top_min_spin: rejects A, C, f that are not finite and > 0, and C > 2A") {
+TEST_CASE("sleeping_top_min_spin: rejects A or C or f not finite and > 0 and rejects C > 2A") {
     CHECK_THROWS_AS(rigid::sleeping_top_min_spin(0.0, 1.0, 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::sleeping_top_min_spin(1.0, -1.0, 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::sleeping_top_min_spin(1.0, 1.0, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
@@ -461,14 +461,14 @@ TEST_CASE("sleeping_top_min_spin: rejects A, C, f that are not finite and > 0, a
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch04_heavy_top") {
 
-TEST_CASE("euler_vector: E = (1.7, 0, 0) at t = 0 and (0, -2.7, 0) at t = pi/2, the worked example of Chapter 4") {
+TEST_CASE("euler_vector: E = (1.7; 0; 0) at t = 0 and (0; -2.7; 0) at t = pi/2 in the worked example of Chapter 4") {
     const Mat3 J = Vec3(1, 1.5, 2.2).asDiagonal();
     const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
     CHECK_MAT_NEAR(rigid::euler_vector(J, p, 0.0), Vec3(1.7, 0, 0), 1e-14);
     CHECK_MAT_NEAR(rigid::euler_vector(J, p, pi / 2), Vec3(0, -2.7, 0), 1e-14);
 }
 
-TEST_CASE("torque: T = (1, 0, 0) at t = 0 and (0, -1, 0) at t = pi/2, the worked example of Chapter 4") {
+TEST_CASE("torque: T = (1; 0; 0) at t = 0 and (0; -1; 0) at t = pi/2 in the worked example of Chapter 4") {
     const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
     CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, 0.0), Vec3(1, 0, 0), 1e-15);
     CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, pi / 2), Vec3(0, -1, 0), 1e-15);

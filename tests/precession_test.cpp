@@ -215,7 +215,7 @@ TEST_CASE("fit_circle: rejects too few or non-finite or coincident or collinear 
 // round the whole circle (their mean, at equally spaced phases, is the centre).
 TEST_SUITE("ch02_regular_precession") {
 
-TEST_CASE("precession_lab_circle: omega(t) from R(t) lies on it, and goes all the way round") {
+TEST_CASE("precession_lab_circle: omega(t) from R(t) lies on it and goes all the way round") {
     for (int n = 0; n < 20; ++n) {
         const RegularPrecession p = random_precession();
         CAPTURE(p.a.transpose());
@@ -239,7 +239,7 @@ TEST_CASE("precession_lab_circle: omega(t) from R(t) lies on it, and goes all th
     }
 }
 
-TEST_CASE("precession_lab_circle: orthogonal axes, alpha = 2, beta = 1: centre b, radius 2") {
+TEST_CASE("precession_lab_circle: orthogonal axes with alpha = 2 and beta = 1 give centre b and radius 2") {
     const RegularPrecession p{Vec3(0, 0, 3), 2.0, Vec3(0, 1, 0), 1.0};
     const rigid::Circle c = rigid::precession_lab_circle(p);
     CHECK_MAT_NEAR(c.centre, Vec3(0, 1, 0), 1e-15);
@@ -257,7 +257,7 @@ TEST_CASE("precession_lab_circle: bad input is rejected as by precession_rotatio
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch02_regular_precession") {
 
-TEST_CASE("precession_body_angular_velocity: Omega(t) = (sin 2t, cos 2t, 2), the worked example of Chapter 2") {
+TEST_CASE("precession_body_angular_velocity: Omega(t) = (sin 2t; cos 2t; 2) in the worked example of Chapter 2") {
     const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
     for (double t : {0.0, 0.1, 1.0, pi}) {
         CAPTURE(t);
@@ -265,15 +265,15 @@ TEST_CASE("precession_body_angular_velocity: Omega(t) = (sin 2t, cos 2t, 2), the
     }
 }
 
-TEST_CASE("precession_omega_squared: 5, the worked example of Chapter 2") {
+TEST_CASE("precession_omega_squared: 5 in the worked example of Chapter 2") {
     CHECK_NEAR(rigid::precession_omega_squared({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 5.0, 1e-14);
 }
 
-TEST_CASE("precession_axial_component: 2, the worked example of Chapter 2") {
+TEST_CASE("precession_axial_component: 2 in the worked example of Chapter 2") {
     CHECK_NEAR(rigid::precession_axial_component({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 2.0, 1e-14);
 }
 
-TEST_CASE("precession_omega_circle: centre (0, 0, 2), radius 1, the worked example of Chapter 2") {
+TEST_CASE("precession_omega_circle: centre (0; 0; 2) and radius 1 in the worked example of Chapter 2") {
     const rigid::Circle c = rigid::precession_omega_circle({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0});
     CHECK_MAT_NEAR(c.centre, Vec3(0, 0, 2), 1e-14);
     CHECK_NEAR(c.radius, 1.0, 1e-14);

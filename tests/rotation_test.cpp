@@ -280,7 +280,7 @@ TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") 
 // rotation taking one to the other can have.
 TEST_SUITE("ch01_pure_rotations") {
 
-TEST_CASE("rotation_between: a rotation that takes u's direction to v's, by the angle between them") {
+TEST_CASE("rotation_between: a rotation that takes the direction of u to that of v by the angle between them") {
     for (int n = 0; n < 50; ++n) {
         const Vec3 u = checks::random_vector(3), v = checks::random_vector(2);
         if (u.norm() < 0.1 || v.norm() < 0.1) continue;
@@ -300,7 +300,7 @@ TEST_CASE("rotation_between: a rotation that takes u's direction to v's, by the 
     }
 }
 
-TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2, the identity for parallel vectors") {
+TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2 and the identity for parallel vectors") {
     CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 2 * Vec3::UnitY()), angle_axis(Vec3::UnitZ(), pi / 2), 1e-15);
     const Vec3 u(0.3, -1.2, 0.4);
     CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
@@ -340,7 +340,7 @@ TEST_CASE("rotation_about: the quarter turn about e3 of the worked example of Ch
     CHECK_MAT_NEAR(R * Vec3(1, 0, 2), Vec3(0, 1, 2), 1e-15);
 }
 
-TEST_CASE("body_angular_velocity: Omega = (0, 0, 2) at every instant, the worked example of Chapter 1") {
+TEST_CASE("body_angular_velocity: Omega = (0 0 2) at every instant in the worked example of Chapter 1") {
     const double alpha = 2;
     for (double t : {0.0, 0.3, pi / 4}) {
         CAPTURE(t);
