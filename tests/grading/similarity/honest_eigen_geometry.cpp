@@ -83,4 +83,9 @@ double geodesic_angle(const Mat3& R1, const Mat3& R2) {
     return std::atan2(sine_axis.norm(), cosine);
 }
 
+Mat3 rotation_between(const Vec3& u, const Vec3& v) {
+    const Vec3 from = require_axis(u, "from"), to = require_axis(v, "to");
+    return Eigen::Quaterniond::FromTwoVectors(from, to).toRotationMatrix();
+}
+
 }  // namespace rigid
