@@ -23,4 +23,7 @@ double rotational_energy(const Vec3& I, const Vec3& Omega) { todo("rotational_en
 // TODO: [P, (6.9)] |I Omega|^2.
 double angular_momentum_squared(const Vec3& I, const Vec3& Omega) { todo("angular_momentum_squared"); }
 
+// TODO (derivation): linearise Euler's equation about Omega = spin e_axis.
+double wobble_frequency_squared(const Vec3& I, int axis, double spin) { todo("wobble_frequency_squared"); }
+
 }  // namespace rigid

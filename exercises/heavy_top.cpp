@@ -45,4 +45,7 @@ double precession_residual(const HeavyTop& top, const TrialPrecession& p, int n)
 // TODO: Nelder-Mead (gsl_multimin_fminimizer_nmsimplex2) over the free parameters, from random starts.
 PrecessionFit min_precession_residual(const PrecessionSearch& search) { todo("min_precession_residual"); }
 
+// TODO (derivation): linearise (3.1)-(3.2) about the upright spin.
+double sleeping_top_min_spin(double A, double C, double f) { todo("sleeping_top_min_spin"); }
+
 }  // namespace rigid

@@ -33,4 +33,7 @@ Circle precession_omega_circle(const RegularPrecession& p) { todo("precession_om
 // TODO: best-fit plane (smallest scatter direction) and Kasa circle, with both residuals.
 CircleFit fit_circle(const std::vector<Vec3>& points) { todo("fit_circle"); }
 
+// TODO (derivation): find the centre, normal and radius of the circle of omega(t) by hand first.
+Circle precession_lab_circle(const RegularPrecession& p) { todo("precession_lab_circle"); }
+
 }  // namespace rigid

@@ -37,4 +37,7 @@ AxisAngle compose(const AxisAngle& first, const AxisAngle& second) { todo("compo
 // TODO: the angle of R1^T R2, computed with atan2.
 double geodesic_angle(const Mat3& R1, const Mat3& R2) { todo("geodesic_angle"); }
 
+// TODO (derivation): derive the axis and the angle from u and v, then build the matrix.
+Mat3 rotation_between(const Vec3& u, const Vec3& v) { todo("rotation_between"); }
+
 }  // namespace rigid

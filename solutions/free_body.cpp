@@ -1,6 +1,9 @@
 // Chapter 3 reference solutions: the free body. Contracts in rigid/free_body.hpp.
 #include "rigid/free_body.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "rigid/require.hpp"
 #include "rigid/rotation.hpp"
 
@@ -27,5 +30,14 @@ OdeRhs free_body_equations(const Vec3& I) {
 double rotational_energy(const Vec3& I, const Vec3& Omega) { return 0.5 * Omega.dot(I.cwiseProduct(Omega)); }
 
 double angular_momentum_squared(const Vec3& I, const Vec3& Omega) { return I.cwiseProduct(Omega).squaredNorm(); }
+
+double wobble_frequency_squared(const Vec3& I, int axis, double spin) {
+    require_principal_moments(I);
+    if (axis < 0 || axis > 2)
+        throw std::invalid_argument("wobble_frequency_squared: axis must be 0, 1 or 2, not " + std::to_string(axis));
+    require_finite(spin, "spin");
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    return spin * spin * (I(axis) - I(i)) * (I(axis) - I(j)) / (I(i) * I(j));
+}
 
 }  // namespace rigid

@@ -263,4 +263,13 @@ PrecessionFit min_precession_residual(const PrecessionSearch& search) {
     return {precession_residual(d.top, d.precession), d.top, d.precession, context.evaluations};
 }
 
+double sleeping_top_min_spin(double A, double C, double f) {
+    require_positive(A, "moment A");
+    require_positive(C, "moment C");
+    require_positive(f, "f = g L mu");
+    if (C > 2 * A)
+        throw std::invalid_argument("sleeping_top_min_spin: C > 2A breaks the triangle inequality C <= A + A");
+    return 2 * std::sqrt(A * f) / C;  // C^2 omega^2 > 4 A f
+}
+
 }  // namespace rigid

@@ -99,4 +99,11 @@ CircleFit fit_circle(const std::vector<Vec3>& points) {
     return {{centre, n, radius}, plane_res, circle_res};
 }
 
+Circle precession_lab_circle(const RegularPrecession& p) {
+    precession_rotation(p, 0.0);  // the bad-input rules of (1.4)
+    const Vec3 a = p.a.normalized(), b = p.b.normalized();
+    // omega(t) = beta b + alpha R^b(beta t) a: the part of a along b stays, the rest turns.
+    return Circle{(p.beta + p.alpha * a.dot(b)) * b, b, p.alpha * a.cross(b).norm()};
+}
+
 }  // namespace rigid

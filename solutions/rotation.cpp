@@ -2,6 +2,7 @@
 #include "rigid/rotation.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "rigid/require.hpp"
 
@@ -86,6 +87,22 @@ AxisAngle compose(const AxisAngle& first, const AxisAngle& second) {
 double geodesic_angle(const Mat3& R1, const Mat3& R2) {
     const Mat3 M = R1.transpose() * R2;
     return std::atan2(vee(M).norm(), 0.5 * (M.trace() - 1));
+}
+
+Mat3 rotation_between(const Vec3& u, const Vec3& v) {
+    const Vec3 p = require_axis(u, "direction u"), q = require_axis(v, "direction v");
+    // The plane of p and q is turned into itself: axis p x q, angle atan2(|p x q|, p . q).
+    const Vec3 n = p.cross(q);
+    const double s = n.norm(), c = p.dot(q);
+    if (s > 1e-300) return rotation_about(n, std::atan2(s, c));
+    if (c > 0) return Mat3::Identity();
+    // Antiparallel: a half turn about any axis orthogonal to p; take the one farthest from p's
+    // largest component, so that the cross product is well conditioned.
+    Vec3 e = Vec3::Zero();
+    int k = 0;
+    p.cwiseAbs().minCoeff(&k);
+    e(k) = 1;
+    return rotation_about(p.cross(e), std::numbers::pi);
 }
 
 }  // namespace rigid

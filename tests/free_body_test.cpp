@@ -3,6 +3,7 @@
 // written out with the Levi-Civita symbol or by components, and the exact elliptic motion
 // (rigid/free_body_exact.hpp, provided) integrated against with GSL's rk8pd.
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -149,6 +150,99 @@ TEST_CASE("rotational_energy: both integrals of (6.9) are constant along the exa
         CHECK_NEAR(rigid::rotational_energy(I, w), E0, 1e-14 * E0);
         CHECK_NEAR((I.asDiagonal() * w).squaredNorm(), M0, 1e-14 * M0);
     }
+}
+
+}  // TEST_SUITE
+
+// The derivation exercise of Chapter 3. The reference is Euler's equation itself, linearised
+// numerically: its Jacobian at Omega = spin e_axis by central differences (exact up to
+// round-off, the right-hand side being quadratic) and the eigenvalues of that 3 x 3 matrix,
+// lambda = +-i nu (stable) or +-sqrt(-nu^2) (unstable), and 0 along the axis.
+namespace {
+
+Vec3 euler_written_out(const Vec3& I, const Vec3& W) {  // I W' = (I W) x W, by components
+    return Vec3((I(1) - I(2)) * W(1) * W(2) / I(0), (I(2) - I(0)) * W(2) * W(0) / I(1),
+                (I(0) - I(1)) * W(0) * W(1) / I(2));
+}
+
+double nu_squared_from_jacobian(const Vec3& I, int axis, double spin) {
+    Vec3 W0 = Vec3::Zero();
+    W0(axis) = spin;
+    Mat3 J;
+    const double h = 1e-3 * (1 + std::abs(spin));
+    for (int c = 0; c < 3; ++c) {
+        Vec3 d = Vec3::Zero();
+        d(c) = h;
+        J.col(c) = (euler_written_out(I, W0 + d) - euler_written_out(I, W0 - d)) / (2 * h);
+    }
+    const Eigen::Vector3cd lambda = Eigen::EigenSolver<Mat3>(J).eigenvalues();
+    std::complex<double> big = 0;  // the pair +-lambda; lambda^2 = -nu^2
+    for (int k = 0; k < 3; ++k)
+        if (std::abs(lambda(k)) > std::abs(big)) big = lambda(k);
+    return -(big * big).real();
+}
+
+}  // namespace
+
+TEST_SUITE("ch03_free_body") {
+
+TEST_CASE("wobble_frequency_squared: equals -lambda^2 of Euler's equation linearised about the spin") {
+    for (int n = 0; n < 30; ++n) {
+        const Vec3 I = random_moments();
+        const int axis = n % 3;
+        const double spin = checks::uniform(-3, 3);
+        CAPTURE(I.transpose());
+        CAPTURE(axis);
+        CAPTURE(spin);
+        const double expected = nu_squared_from_jacobian(I, axis, spin);
+        CHECK_NEAR(rigid::wobble_frequency_squared(I, axis, spin), expected, 1e-10 * spin * spin);
+    }
+}
+
+TEST_CASE("wobble_frequency_squared: stable about the largest and smallest axes and unstable about the middle one") {
+    const Vec3 I(1.0, 2.0, 3.0);
+    CHECK(rigid::wobble_frequency_squared(I, 0, 1.0) > 0.1);
+    CHECK(rigid::wobble_frequency_squared(I, 2, 1.0) > 0.1);
+    CHECK(rigid::wobble_frequency_squared(I, 1, 1.0) < -0.1);
+    // A disturbance about the middle axis grows like exp(sqrt(-nu^2) t): measured by integrating
+    // Euler's equation (RK4, dt = 1e-3) from a 1e-9 kick, between t = 10 and t = 20 (where the
+    // decaying mode is gone and the disturbance, near 1e-4, is still small).
+    Vec3 W(1e-9, 1.0, 0.0);
+    const double dt = 1e-3;
+    double at10 = 0;
+    for (int s = 1; s <= 20000; ++s) {
+        const Vec3 k1 = euler_written_out(I, W), k2 = euler_written_out(I, W + 0.5 * dt * k1),
+                   k3 = euler_written_out(I, W + 0.5 * dt * k2), k4 = euler_written_out(I, W + dt * k3);
+        W += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        if (s == 10000) at10 = std::hypot(W(0), W(2));
+    }
+    const double growth = std::log(std::hypot(W(0), W(2)) / at10) / 10.0;
+    CHECK_NEAR(std::sqrt(-rigid::wobble_frequency_squared(I, 1, 1.0)), growth, 1e-3);
+}
+
+TEST_CASE("wobble_frequency_squared: rejects moments that are no body or a bad axis or a non-finite spin") {
+    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 1, 3), 0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(-1, 2, 2), 0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 3, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), -1, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 1, nan_), std::invalid_argument);
+}
+
+}  // TEST_SUITE
+
+// The worked example of the chapter, number by number, as the prose states it.
+TEST_SUITE("ch03_free_body") {
+
+TEST_CASE("rotational_energy: E = 3 for I = (2; 3; 4) and Omega = (1; 0; 1) in the worked example of Chapter 3") {
+    CHECK_NEAR(rigid::rotational_energy(Vec3(2, 3, 4), Vec3(1, 0, 1)), 3.0, 1e-15);
+}
+
+TEST_CASE("angular_momentum_squared: M^2 = 20 in the worked example of Chapter 3") {
+    CHECK_NEAR(rigid::angular_momentum_squared(Vec3(2, 3, 4), Vec3(1, 0, 1)), 20.0, 1e-14);
+}
+
+TEST_CASE("euler_rhs: dOmega/dt = (0; 2/3; 0) in the worked example of Chapter 3") {
+    CHECK_MAT_NEAR(rigid::euler_rhs(Vec3(2, 3, 4), Vec3(1, 0, 1)), Vec3(0, 2.0 / 3, 0), 1e-15);
 }
 
 }  // TEST_SUITE

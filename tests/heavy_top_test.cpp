@@ -401,3 +401,83 @@ TEST_CASE("min_precession_residual: rejects bad moments and angles") {
 }
 
 }  // TEST_SUITE
+
+// The derivation exercise of Chapter 4. The reference is the heavy top's own equations in the
+// variables (Omega, gamma = R^T k), written out here: J Omega' = (J Omega) x Omega + f gamma x z0,
+// gamma' = gamma x Omega. Their Jacobian at the upright spin (central differences, exact up to
+// round-off for this quadratic right-hand side) has eigenvalues with a positive real part
+// exactly when the spin is unstable. The student's threshold must sit between a spin 1e-6
+// below it (unstable) and 1e-6 above it (stable).
+namespace {
+
+double largest_growth_rate(double A, double C, double f, double omega) {
+    const Vec3 Jd(A, A, C), z0 = Vec3::UnitZ();
+    auto rhs = [&](const Eigen::Matrix<double, 6, 1>& y) {
+        const Vec3 W = y.head<3>(), g = y.tail<3>();
+        Eigen::Matrix<double, 6, 1> out;
+        out.head<3>() = (Jd.cwiseProduct(W).cross(W) + f * g.cross(z0)).cwiseQuotient(Jd);
+        out.tail<3>() = g.cross(W);
+        return out;
+    };
+    Eigen::Matrix<double, 6, 1> y0;
+    y0 << 0, 0, omega, 0, 0, 1;
+    Eigen::Matrix<double, 6, 6> Jac;
+    const double h = 1e-3;
+    for (int c = 0; c < 6; ++c) {
+        Eigen::Matrix<double, 6, 1> d = Eigen::Matrix<double, 6, 1>::Zero();
+        d(c) = h;
+        Jac.col(c) = (rhs(y0 + d) - rhs(y0 - d)) / (2 * h);
+    }
+    // The disturbances across the axis: Omega_1, Omega_2, gamma_1, gamma_2 (the rest decouple
+    // with eigenvalue 0).
+    const int idx[4] = {0, 1, 3, 4};
+    Eigen::Matrix4d B;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) B(r, c) = Jac(idx[r], idx[c]);
+    return Eigen::EigenSolver<Eigen::Matrix4d>(B).eigenvalues().real().maxCoeff();
+}
+
+}  // namespace
+
+TEST_SUITE("ch04_heavy_top") {
+
+TEST_CASE("sleeping_top_min_spin: unstable just below it and stable just above it") {
+    for (int n = 0; n < 20; ++n) {
+        const double A = checks::uniform(0.5, 3), C = checks::uniform(0.2, 2) * A, f = checks::uniform(0.1, 5);
+        CAPTURE(A);
+        CAPTURE(C);
+        CAPTURE(f);
+        const double w = rigid::sleeping_top_min_spin(A, C, f);
+        const double rate = std::sqrt(f / A);  // the scale of the growth rates
+        INFO("threshold from your function " << w);
+        CHECK(largest_growth_rate(A, C, f, w * (1 - 1e-6)) >= 1e-4 * rate);
+        CHECK(largest_growth_rate(A, C, f, w * (1 + 1e-6)) <= 1e-9 * rate);
+    }
+}
+
+TEST_CASE("sleeping_top_min_spin: rejects A or C or f not finite and > 0 and rejects C > 2A") {
+    CHECK_THROWS_AS(rigid::sleeping_top_min_spin(0.0, 1.0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::sleeping_top_min_spin(1.0, -1.0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::sleeping_top_min_spin(1.0, 1.0, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::sleeping_top_min_spin(1.0, 2.5, 1.0), std::invalid_argument);
+}
+
+}  // TEST_SUITE
+
+// The worked example of the chapter, number by number, as the prose states it.
+TEST_SUITE("ch04_heavy_top") {
+
+TEST_CASE("euler_vector: E = (1.7; 0; 0) at t = 0 and (0; -2.7; 0) at t = pi/2 in the worked example of Chapter 4") {
+    const Mat3 J = Vec3(1, 1.5, 2.2).asDiagonal();
+    const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
+    CHECK_MAT_NEAR(rigid::euler_vector(J, p, 0.0), Vec3(1.7, 0, 0), 1e-14);
+    CHECK_MAT_NEAR(rigid::euler_vector(J, p, pi / 2), Vec3(0, -2.7, 0), 1e-14);
+}
+
+TEST_CASE("torque: T = (1; 0; 0) at t = 0 and (0; -1; 0) at t = pi/2 in the worked example of Chapter 4") {
+    const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
+    CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, 0.0), Vec3(1, 0, 0), 1e-15);
+    CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, pi / 2), Vec3(0, -1, 0), 1e-15);
+}
+
+}  // TEST_SUITE

@@ -208,3 +208,75 @@ TEST_CASE("fit_circle: rejects too few or non-finite or coincident or collinear 
 }
 
 }  // TEST_SUITE
+
+// The derivation exercise of Chapter 2. The circle is checked against omega(t) = vee(Rdot R^T)
+// from finite differences of R(t) built with Eigen (omega_fd above): every sample lies in the
+// plane of the circle and at its radius from its centre, and over one period the samples go
+// round the whole circle (their mean, at equally spaced phases, is the centre).
+TEST_SUITE("ch02_regular_precession") {
+
+TEST_CASE("precession_lab_circle: omega(t) from R(t) lies on it and goes all the way round") {
+    for (int n = 0; n < 20; ++n) {
+        const RegularPrecession p = random_precession();
+        CAPTURE(p.a.transpose());
+        CAPTURE(p.b.transpose());
+        CAPTURE(p.alpha);
+        CAPTURE(p.beta);
+        const rigid::Circle c = rigid::precession_lab_circle(p);
+        const double scale = p.alpha + p.beta;
+        CHECK_NEAR(c.normal.norm(), 1.0, 1e-14);
+        CHECK_NEAR(c.normal.dot(p.b.normalized()), 1.0, 1e-14);
+        const int m = 24;
+        Vec3 mean = Vec3::Zero();
+        for (int j = 0; j < m; ++j) {
+            const double t = 2 * pi / p.beta * j / m;  // omega(t) turns with the precession
+            const Vec3 w = omega_fd(p, t, true);
+            mean += w / m;
+            CHECK_NEAR((w - c.centre).dot(c.normal) / scale, 0.0, 1e-10);
+            CHECK_NEAR(((w - c.centre) - (w - c.centre).dot(c.normal) * c.normal).norm() / scale, c.radius / scale, 1e-10);
+        }
+        CHECK_MAT_NEAR(c.centre / scale, mean / scale, 1e-10);
+    }
+}
+
+TEST_CASE("precession_lab_circle: orthogonal axes with alpha = 2 and beta = 1 give centre b and radius 2") {
+    const RegularPrecession p{Vec3(0, 0, 3), 2.0, Vec3(0, 1, 0), 1.0};
+    const rigid::Circle c = rigid::precession_lab_circle(p);
+    CHECK_MAT_NEAR(c.centre, Vec3(0, 1, 0), 1e-15);
+    CHECK_MAT_NEAR(c.normal, Vec3(0, 1, 0), 1e-15);
+    CHECK_NEAR(c.radius, 2.0, 1e-15);
+}
+
+TEST_CASE("precession_lab_circle: bad input is rejected as by precession_rotation") {
+    CHECK_THROWS_AS(rigid::precession_lab_circle({Vec3::Zero(), 1.0, Vec3::UnitZ(), 1.0}), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::precession_lab_circle({Vec3::UnitX(), nan_, Vec3::UnitZ(), 1.0}), std::invalid_argument);
+}
+
+}  // TEST_SUITE
+
+// The worked example of the chapter, number by number, as the prose states it.
+TEST_SUITE("ch02_regular_precession") {
+
+TEST_CASE("precession_body_angular_velocity: Omega(t) = (sin 2t; cos 2t; 2) in the worked example of Chapter 2") {
+    const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
+    for (double t : {0.0, 0.1, 1.0, pi}) {
+        CAPTURE(t);
+        CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, t), Vec3(std::sin(2 * t), std::cos(2 * t), 2.0), 1e-14);
+    }
+}
+
+TEST_CASE("precession_omega_squared: 5 in the worked example of Chapter 2") {
+    CHECK_NEAR(rigid::precession_omega_squared({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 5.0, 1e-14);
+}
+
+TEST_CASE("precession_axial_component: 2 in the worked example of Chapter 2") {
+    CHECK_NEAR(rigid::precession_axial_component({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 2.0, 1e-14);
+}
+
+TEST_CASE("precession_omega_circle: centre (0; 0; 2) and radius 1 in the worked example of Chapter 2") {
+    const rigid::Circle c = rigid::precession_omega_circle({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0});
+    CHECK_MAT_NEAR(c.centre, Vec3(0, 0, 2), 1e-14);
+    CHECK_NEAR(c.radius, 1.0, 1e-14);
+}
+
+}  // TEST_SUITE

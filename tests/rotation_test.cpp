@@ -273,3 +273,84 @@ TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") 
 }
 
 }  // TEST_SUITE
+
+// The derivation exercise of Chapter 1. Checked by what the rotation must do, never by a
+// formula for it: it is a rotation, it takes u's direction to v's, and its angle is the angle
+// between u and v (measured here with Eigen's AngleAxisd of the result), the smallest a
+// rotation taking one to the other can have.
+TEST_SUITE("ch01_pure_rotations") {
+
+TEST_CASE("rotation_between: a rotation that takes the direction of u to that of v by the angle between them") {
+    for (int n = 0; n < 50; ++n) {
+        const Vec3 u = checks::random_vector(3), v = checks::random_vector(2);
+        if (u.norm() < 0.1 || v.norm() < 0.1) continue;
+        CAPTURE(u.transpose());
+        CAPTURE(v.transpose());
+        const Mat3 R = rigid::rotation_between(u, v);
+        // Near opposite directions every ordinary formula (a half-way quaternion, Eigen's
+        // FromTwoVectors) loses digits like eps / (1 + cos): the tolerance allows 50 times that.
+        const double tol = 1e-14 * (1 + 1 / (1 + u.normalized().dot(v.normalized())));
+        CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), tol);
+        CHECK_NEAR(R.determinant(), 1.0, tol);
+        CHECK_MAT_NEAR(R * u.normalized(), v.normalized(), tol);
+        // The angle of R (Eigen's own axis-angle of the matrix) equals the angle between u and v,
+        // and its axis is orthogonal to both.
+        const Eigen::AngleAxisd aa(R);
+        const double between = std::atan2(u.cross(v).norm(), u.dot(v));
+        CHECK_NEAR(aa.angle(), between, 10 * tol);
+        CHECK_NEAR(aa.axis().dot(u.normalized()), 0.0, 1e-12);
+        CHECK_NEAR(aa.axis().dot(v.normalized()), 0.0, 1e-12);
+    }
+}
+
+TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2 and the identity for parallel vectors") {
+    CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 2 * Vec3::UnitY()), angle_axis(Vec3::UnitZ(), pi / 2), 1e-15);
+    const Vec3 u(0.3, -1.2, 0.4);
+    CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
+    // 1e-9 rad apart: the angle keeps its digits (acos of the dot product would give 0 or 1.5e-8).
+    const Vec3 w = angle_axis(u.cross(Vec3::UnitZ()), 1e-9) * u;
+    CHECK_NEAR(Eigen::AngleAxisd(rigid::rotation_between(u, w)).angle(), 1e-9, 1e-15);
+}
+
+TEST_CASE("rotation_between: opposite vectors give a half turn about an axis orthogonal to u") {
+    for (const Vec3& u : {Vec3(1, 0, 0), Vec3(0, 0, -2), Vec3(0.3, -1.2, 0.4)}) {
+        CAPTURE(u.transpose());
+        const Mat3 R = rigid::rotation_between(u, -3 * u);
+        CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 1e-14);
+        CHECK_NEAR(R.determinant(), 1.0, 1e-14);
+        CHECK_MAT_NEAR(R * u, -u, 1e-14);
+        CHECK_NEAR(Eigen::AngleAxisd(R).angle(), pi, 1e-7);
+    }
+}
+
+TEST_CASE("rotation_between: a zero or non-finite vector is rejected") {
+    CHECK_THROWS_AS(rigid::rotation_between(Vec3::Zero(), Vec3::UnitX()), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3::Zero()), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::rotation_between(Vec3(nan_, 0, 1), Vec3::UnitX()), std::invalid_argument);
+    CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3(inf_, 0, 1)), std::invalid_argument);
+}
+
+}  // TEST_SUITE
+
+// The worked example of the chapter, number by number, as the prose states it.
+TEST_SUITE("ch01_pure_rotations") {
+
+TEST_CASE("rotation_about: the quarter turn about e3 of the worked example of Chapter 1") {
+    Mat3 hand;
+    hand << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+    const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
+    CHECK_MAT_NEAR(R, hand, 1e-15);
+    CHECK_MAT_NEAR(R * Vec3(1, 0, 2), Vec3(0, 1, 2), 1e-15);
+}
+
+TEST_CASE("body_angular_velocity: Omega = (0 0 2) at every instant in the worked example of Chapter 1") {
+    const double alpha = 2;
+    for (double t : {0.0, 0.3, pi / 4}) {
+        CAPTURE(t);
+        const Mat3 R = angle_axis(Vec3::UnitZ(), alpha * t);
+        const Mat3 R_dot = alpha * skew_ref(Vec3::UnitZ()) * R;
+        CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Vec3(0, 0, 2), 1e-15);
+    }
+}
+
+}  // TEST_SUITE

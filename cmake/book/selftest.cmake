@@ -8,9 +8,63 @@ file(REMOVE_RECURSE "${WORK}")
 file(COPY "${ROOT}/cmake/book/page.html" "${ROOT}/cmake/book/book.css" DESTINATION "${tree}/cmake/book")
 
 file(WRITE "${tree}/README.md" "# A workbook broken on purpose\n")
-file(WRITE "${tree}/chapters/README.md" "| 1 | [Mini](01_mini/README.md) |\n| 2 | [Bare](02_bare/README.md) |\n")
-file(WRITE "${tree}/chapters/02_bare/README.md"
-     "# Chapter 2. Bare\n\n**Before you start.** Chapter 1.\n\n## Errata\n\nNone.\n\n## 2.1 After the errata\n")
+# Chapters 1 and 2 are checked as lessons (book.cpp's lesson_chapters), 5 and 6 by the older
+# rules; there is no notation page, and the contents do not link one.
+file(WRITE "${tree}/chapters/README.md" "| 1 | [Mini](01_mini/README.md) |\n| 2 | [Lesson](02_lesson/README.md) |\n"
+     "| 5 | [Bare](05_bare/README.md) |\n| 6 | [Old](06_old/README.md) |\n")
+file(WRITE "${tree}/chapters/05_bare/README.md"
+     "# Chapter 5. Bare\n\n**Before you start.** Chapter 1.\n\n## Errata\n\nNone.\n\n## 2.1 After the errata\n")
+file(WRITE "${tree}/chapters/06_old/README.md"
+     "# Chapter 6. Old\n\nNo word on what to know first.\n\n## Exercises\n\nDo it somewhere.\n")
+# A lesson with every heading, but Checking [P] before the exercises, seven objectives and no
+# time, two predictions (one without a command) and no scene in Check your work.
+file(WRITE "${tree}/chapters/02_lesson/README.md" [=[
+# Chapter 2. Lesson
+
+## Before you start
+
+Chapter 1.
+
+## Learning objectives
+
+* one
+* two
+* three
+* four
+* five
+* six
+* seven
+
+## Worked example
+
+<details>
+<summary>Predict: what does the scene show?</summary>
+
+Run `build/solutions/scenes/mini_scene --alpha 1`. It shows a circle.
+</details>
+
+<details>
+<summary>Predict: and now?</summary>
+
+Nothing to run.
+</details>
+
+## Checking [P]
+
+Fine.
+
+## Exercises
+
+In `exercises/mini.cpp`: `mini` (derivation).
+
+## Check your work
+
+Run the graders.
+
+## Going further
+
+More.
+]=])
 file(WRITE "${tree}/exercises/rigid/mini.hpp" [=[
 // snippet: quoted
 int mini(int x);
@@ -141,10 +195,22 @@ check("snippets --check-values"
          "value 'mini_scene.gone': the scene as built no longer reports it"
   COMMAND "${SNIPPETS}" --check-values "${tree}" "${tree}/runs.txt" "${tree}/smoke")
 check("book --check-structure"
-  EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section"
-         "do not say where to work" "do not show how to check the work" "its last section is '## 2.1"
-         "must name a chapter of the contents \\(1..2\\), not '9'" "this one has none" "has 4 cells"
-  COMMAND "${BOOK}" --check-structure "${tree}")
+  EXPECT "06_old/README.md: does not open with '\\*\\*Before you start" "06_old/README.md: has no '## Errata' section"
+         "06_old/README.md: its Exercises do not say where to work" "06_old/README.md: its Exercises do not show how to check"
+         "05_bare/README.md: its last section is '## 2.1"
+         "must name a chapter of the contents \\(1, 2, 5, 6\\), not '9'" "this one has none" "has 4 cells"
+         "chapters/notation.md: missing" "chapters/README.md: does not link the notation page"
+         "01_mini/README.md: does not link the notation page"
+         "01_mini/README.md: has no '## Learning objectives' section" "01_mini/README.md: has 0 <details> blocks"
+         "01_mini/README.md: its Exercises list no exercise marked '\\(derivation\\)'"
+         "01_mini/README.md: its Exercises do not say where to work"
+         "01_mini/README.md: its first section is not '## Before you start'"
+         "02_lesson/README.md: '## Checking \\[P\\]' comes too early" "02_lesson/README.md: its Learning objectives have 7 bullets"
+         "02_lesson/README.md: its Learning objectives have no line starting '\\*\\*Time:\\*\\*'"
+         "02_lesson/README.md: has 2 <details> blocks" "02_lesson/README.md: 1 of its Predict: blocks name no command"
+         "02_lesson/README.md: its Check your work does not use 'cmake/workbook check'"
+         "02_lesson/README.md: its Check your work names no scene command"
+  COMMAND "${BOOK}" --check-structure "${tree}" --lessons 1,2)
 check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"

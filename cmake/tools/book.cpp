@@ -3,7 +3,7 @@
 //
 //   book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>]
 //        [--label <text>] [--strict]
-//   book --check-structure <root>
+//   book --check-structure <root> [--lessons <n>,<n>,...]
 //   book --check-figures <root> <folder>...
 //
 // --render: chapters/README.md is the table of contents; each row that links
@@ -22,9 +22,16 @@
 // --check-figures: no source writes gnuplot's Symbol-font escape for a Greek letter, and every
 // SVG under the folders names a font that has every character of its text (fontconfig).
 //
-// --check-structure: every chapter opens with "**Before you start.**" (what the reader
-// should know first), has an "## Errata" section and ends with an "## Exercises" section
-// that names the exercises/ file to work in and shows the command that checks the work.
+// --check-structure: chapters/notation.md exists and the contents and Chapter 1 link it. A
+// chapter written as a lesson (its number in lesson_chapters below) has, in this order, the
+// sections "## Before you start", "## Learning objectives" (3-6 bullets, then a line starting
+// "**Time:**"), "## Worked example", "## Exercises" (naming the exercises/ file and at least
+// one exercise marked "(derivation)"), "## Check your work" (with `cmake/workbook check`
+// and a scene command), "## Going further" and "## Checking [P]", and at least three
+// <details> blocks whose <summary> starts with "Predict:", each naming a command to run. Any
+// other chapter opens with "**Before you start.**" (what the reader should know first), has
+// an "## Errata" section and ends with an "## Exercises" section that names the exercises/
+// file to work in and shows the command that checks the work.
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -106,14 +113,125 @@ std::vector<std::string> chapter_list(const fs::path& root) {
 
 // ------------------------------------------------------------------------------ structure
 
+// The chapters written as lessons, by number: they get the lesson checks (objectives, worked
+// example, predict-then-run, derivation exercise, Check your work, Going further, Checking [P]).
+// Extend the list as chapters are rewritten; once it holds every chapter, the older rules
+// below apply to none. (--lessons 1,2,... replaces it, for the self-test's small tree.)
+std::set<int> lesson_chapters = {1, 2, 3, 4};
+
+// The lesson checks of one chapter (see --check-structure above); appends to problems.
+void check_lesson(const fs::path& md, const std::string& name, std::vector<std::string>& problems) {
+    const std::vector<std::string> required = {"Before you start", "Learning objectives", "Worked example", "Exercises",
+                                               "Check your work",  "Going further",       "Checking [P]"};
+    std::vector<std::string> h2s;                 // every "## " heading, in order
+    int bullets = 0;                              // of Learning objectives, before **Time:**
+    bool time_line = false, derivation = false, names_file = false, check_cmd = false, scene_cmd = false;
+    int predicts = 0, predicts_with_command = 0;  // <details> blocks whose summary starts "Predict:"
+    bool in_fence = false, in_details = false, in_predict = false, predict_command = false;
+    for (const auto& l : prose::read_lines(md)) {
+        const std::string section = h2s.empty() ? "" : h2s.back();
+        // A Predict block must name what to run: a shell block or a build/... command in it.
+        if (in_predict && (l.find("build/") != std::string::npos || l.find("cmake/workbook") != std::string::npos))
+            predict_command = true;
+        if (section == "Check your work") {
+            if (l.find("cmake/workbook check") != std::string::npos) check_cmd = true;
+            if (l.find("scenes/") != std::string::npos) scene_cmd = true;
+        }
+        if (prose::is_fence(l)) in_fence = !in_fence;
+        if (in_fence) continue;
+        if (l.rfind("## ", 0) == 0) {
+            h2s.push_back(l.substr(3));
+            continue;
+        }
+        if (l.find("<details") != std::string::npos) in_details = true;
+        if (in_details && l.find("<summary>") != std::string::npos) {
+            const std::size_t at = l.find("<summary>") + 9;
+            if (l.compare(at, 8, "Predict:") == 0 || l.compare(at, 10, "**Predict:") == 0) {
+                in_predict = true;
+                predict_command = false;
+                ++predicts;
+            }
+        }
+        if (l.find("</details>") != std::string::npos) {
+            if (in_predict && predict_command) ++predicts_with_command;
+            in_details = in_predict = false;
+        }
+        if (section == "Learning objectives") {
+            if (!time_line && (l.rfind("* ", 0) == 0 || l.rfind("- ", 0) == 0)) ++bullets;
+            if (l.rfind("**Time:**", 0) == 0) time_line = true;
+        }
+        if (section == "Exercises") {
+            if (l.find("(derivation)") != std::string::npos) derivation = true;
+            if (l.find("exercises/") != std::string::npos) names_file = true;
+        }
+    }
+    // Each required heading, present and in order.
+    std::size_t at = 0;
+    for (const auto& h : required) {
+        const auto it = std::find(h2s.begin(), h2s.end(), h);
+        if (it == h2s.end()) {
+            problems.push_back(name + ": has no '## " + h + "' section");
+            continue;
+        }
+        const auto pos = static_cast<std::size_t>(it - h2s.begin());
+        if (pos < at) problems.push_back(name + ": '## " + h + "' comes too early (the order is: Before you start, "
+                                         "Learning objectives, ..., Worked example, ..., Exercises, Check your work, "
+                                         "Going further, Checking [P])");
+        at = std::max(at, pos);
+    }
+    if (h2s.empty() || h2s.front() != "Before you start")
+        problems.push_back(name + ": its first section is not '## Before you start'");
+    else if (h2s.size() < 2 || h2s[1] != "Learning objectives")
+        problems.push_back(name + ": '## Learning objectives' does not follow '## Before you start'");
+    if (bullets < 3 || bullets > 6)
+        problems.push_back(name + ": its Learning objectives have " + std::to_string(bullets) + " bullets; 3 to 6, please");
+    if (!time_line) problems.push_back(name + ": its Learning objectives have no line starting '**Time:**'");
+    if (predicts < 3)
+        problems.push_back(name + ": has " + std::to_string(predicts) +
+                           " <details> blocks whose <summary> starts with 'Predict:'; a chapter needs at least 3");
+    if (predicts_with_command < predicts)
+        problems.push_back(name + ": " + std::to_string(predicts - predicts_with_command) +
+                           " of its Predict: blocks name no command to run (a build/... or cmake/workbook line)");
+    if (!derivation) problems.push_back(name + ": its Exercises list no exercise marked '(derivation)'");
+    if (!names_file) problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
+    if (!check_cmd) problems.push_back(name + ": its Check your work does not use 'cmake/workbook check'");
+    if (!scene_cmd) problems.push_back(name + ": its Check your work names no scene command (build/.../scenes/...)");
+}
+
 int check_structure(const fs::path& root) {
     std::vector<std::string> problems;
     const auto chapters = chapter_list(root);
+    // The notation page: its own page of the book, linked from the contents and from Chapter 1.
+    const fs::path notation = root / "chapters" / "notation.md";
+    if (!fs::exists(notation)) problems.push_back("chapters/notation.md: missing (the notation page of the book)");
+    {
+        bool linked = false;
+        for (const auto& l : prose::read_lines(root / "chapters" / "README.md"))
+            if (l.find("](notation.md") != std::string::npos) linked = true;
+        if (!linked) problems.push_back("chapters/README.md: does not link the notation page (notation.md)");
+    }
+    int lessons = 0;
     for (const auto& ch : chapters) {
         const fs::path md = root / "chapters" / ch / "README.md";
         const std::string name = "chapters/" + ch + "/README.md";
         if (!fs::exists(md)) {
             problems.push_back(name + ": missing (chapters/README.md links it)");
+            continue;
+        }
+        const int number = std::stoi(ch.substr(0, 2));
+        if (number == 1 && lesson_chapters.count(1)) {  // the lesson of Chapter 1 points to the notation
+            bool linked = false;
+            for (const auto& l : prose::read_lines(md))
+                if (l.find("](../notation.md") != std::string::npos) linked = true;
+            if (!linked) problems.push_back(name + ": does not link the notation page (../notation.md)");
+        }
+        if (lesson_chapters.count(number)) {
+            ++lessons;
+            bool title = false;
+            for (const auto& l : prose::read_lines(md))
+                if (l.rfind("# ", 0) == 0) title = true;
+            if (!title) problems.push_back(name + ": no '# Chapter N. Title' heading");
+            check_lesson(md, name, problems);
             continue;
         }
         bool in_fence = false, before_first_h2 = true, knows_first = false, errata = false, title = false;
@@ -206,7 +324,9 @@ int check_structure(const fs::path& root) {
                 problems.push_back(where + ": the evidence of an erratum gives numbers; this one has none");
         }
     }
-    std::cout << chapters.size() << " chapters checked for 'Before you start', 'Errata' and a closing 'Exercises'; "
+    std::cout << chapters.size() << " chapters checked (" << lessons
+              << " as lessons: objectives, worked example, predictions, a derivation, Check your work, Going further, "
+                 "Checking [P]; the others for 'Before you start', 'Errata' and a closing 'Exercises'); the notation page; "
               << rows << " rows of chapters/errata.md checked\n";
     for (const auto& p : problems) std::cout << "  " << p << "\n";
     return problems.empty() ? 0 : 1;
@@ -792,7 +912,7 @@ int Book::render() {
 int usage() {
     std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] [--label <text>]\n"
                  "            [--strict]\n"
-                 "       book --check-structure <root>\n"
+                 "       book --check-structure <root> [--lessons <n>,<n>,...]\n"
                  "       book --check-figures <root> <folder of SVG figures>...\n";
     return 2;
 }
@@ -802,7 +922,13 @@ int usage() {
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
-        if (args.size() == 2 && args[0] == "--check-structure") return check_structure(fs::absolute(args[1]));
+        if (args.size() == 4 && args[0] == "--check-structure" && args[2] == "--lessons") {
+            lesson_chapters.clear();
+            std::stringstream list(args[3]);
+            for (std::string n; std::getline(list, n, ',');) lesson_chapters.insert(std::stoi(n));
+        }
+        if ((args.size() == 2 || args.size() == 4) && args[0] == "--check-structure")
+            return check_structure(fs::absolute(args[1]));
         if (args.size() >= 2 && args[0] == "--check-figures") {
             std::vector<fs::path> trees;
             for (std::size_t i = 2; i < args.size(); ++i) trees.push_back(fs::absolute(args[i]));

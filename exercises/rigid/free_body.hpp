@@ -40,4 +40,14 @@ double rotational_energy(const Vec3& I, const Vec3& Omega);
 double angular_momentum_squared(const Vec3& I, const Vec3& Omega);
 // end snippet
 
+// snippet: wobble_frequency_squared
+// A derivation exercise (Chapter 3): the body spins steadily about its principal axis number
+// `axis` (0, 1 or 2) at the rate `spin`, Omega = spin e_axis. Returns nu^2 such that small
+// disturbances of the two other components of Omega obey x'' = -nu^2 x under Euler's
+// equation: nu^2 > 0, they oscillate with the angular frequency nu; nu^2 < 0, they grow like
+// exp(sqrt(-nu^2) t). Throws std::invalid_argument for moments that are not a body (as
+// free_body_equations), an axis outside 0..2 or a non-finite spin.
+double wobble_frequency_squared(const Vec3& I, int axis, double spin);
+// end snippet
+
 }  // namespace rigid

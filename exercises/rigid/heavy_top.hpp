@@ -164,4 +164,14 @@ struct PrecessionFit {
 PrecessionFit min_precession_residual(const PrecessionSearch& search);
 // end snippet
 
+// snippet: sleeping_top_min_spin
+// A derivation exercise (Chapter 4): a symmetric top, J = diag(A, A, C) at the fixed point
+// O, with its centre of mass on the symmetry axis above O (z(0) = k) and f = g L mu, spins
+// upright about the vertical symmetry axis at the rate omega: Omega = omega z(0), R = 1.
+// Returns the smallest omega > 0 above which this upright spin is linearly stable under
+// (3.1)-(3.2) (the top "sleeps"). Throws std::invalid_argument for A, C or f that are not
+// finite and > 0, or C > 2A (no body has it).
+double sleeping_top_min_spin(double A, double C, double f);
+// end snippet
+
 }  // namespace rigid

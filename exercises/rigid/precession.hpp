@@ -83,4 +83,11 @@ struct CircleFit {
 CircleFit fit_circle(const std::vector<Vec3>& points);
 // end snippet
 
+// snippet: precession_lab_circle
+// A derivation exercise (Chapter 2): the circle that the lab angular velocity omega(t) of
+// the precession traces (centre, unit normal pointing along b, radius). Throws
+// std::invalid_argument as precession_rotation does.
+Circle precession_lab_circle(const RegularPrecession& p);
+// end snippet
+
 }  // namespace rigid

@@ -84,4 +84,13 @@ AxisAngle compose(const AxisAngle& first, const AxisAngle& second);
 double geodesic_angle(const Mat3& R1, const Mat3& R2);
 // end snippet
 
+// snippet: rotation_between
+// A derivation exercise (Chapter 1): the rotation by the smallest angle that takes the
+// direction of u to the direction of v (u and v need not be unit vectors). Its axis is
+// orthogonal to both; for v along u it is the identity; for v along -u every axis
+// orthogonal to u gives a half turn, and any of them may be returned. Throws
+// std::invalid_argument for a zero or non-finite u or v.
+Mat3 rotation_between(const Vec3& u, const Vec3& v);
+// end snippet
+
 }  // namespace rigid

@@ -10,7 +10,7 @@
 # zip's own copy of the workbook). Then run_autograder grades a correct submission (in
 # exercises/), the untouched stub (the .cpp alone), a file that does not compile and an empty
 # submission, and once more with no graders built at all; every results.json must follow
-# Gradescope's format (grading_class schema) with the expected score out of 10.
+# Gradescope's format (grading_class schema) with the expected score out of 11 (the exercises of rotation.cpp).
 set -euo pipefail
 root=$1 work=$2 class_tool=$3
 fail() { echo "FAILED: $*" >&2; exit 1; }
@@ -40,12 +40,12 @@ grade() {
   AUTOGRADER_ROOT=$ag "$ag/run_autograder" > "$work/$name.txt" 2>&1 || fail "$name: run_autograder exited with status $?"
   [[ -f $ag/results/results.json ]] || fail "$name: no results.json"
   cp "$ag/results/results.json" "$work/$name.json"
-  local max=10
+  local max=11
   [[ $ag == "$work/unbuilt" ]] && max=0
   "$class_tool" schema "$ag/results/results.json" --score "$score" --max-score "$max" || fail "$name: results.json is wrong"
 }
 
-grade correct "$work/autograder" 10 exercises/rotation.cpp "$(cat "$root/solutions/rotation.cpp")"
+grade correct "$work/autograder" 11 exercises/rotation.cpp "$(cat "$root/solutions/rotation.cpp")"
 grade stub "$work/autograder" 0 rotation.cpp "$(cat "$root/exercises/rotation.cpp")"
 grep -q 'not started' "$work/stub.json" || fail "stub: no test says 'not started'"
 grade broken "$work/autograder" 0 exercises/rotation.cpp "$(sed 's/todo("hat");/todo("hat")/' "$root/exercises/rotation.cpp")"
@@ -56,4 +56,4 @@ grep -q 'is not in the submission' "$work/empty.json" || fail "empty: the missin
 cp "$work/autograder/source/run_autograder" "$work/unbuilt/run_autograder"
 grade unbuilt "$work/unbuilt" 0 exercises/rotation.cpp "$(cat "$root/solutions/rotation.cpp")"
 grep -q 'graders are not built' "$work/unbuilt.json" || fail "unbuilt: results.json does not say why"
-echo "== Gradescope: autograder.zip builds; correct 10/10, stub 0, broken 0 (build error), empty 0, no graders 0 (said why); every results.json in Gradescope's format"
+echo "== Gradescope: autograder.zip builds; correct 11/11, stub 0, broken 0 (build error), empty 0, no graders 0 (said why); every results.json in Gradescope's format"

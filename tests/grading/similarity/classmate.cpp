@@ -66,4 +66,6 @@ AxisAngle compose(const AxisAngle& first, const AxisAngle& second) { todo("compo
 
 double geodesic_angle(const Mat3& R1, const Mat3& R2) { todo("geodesic_angle"); }
 
+Mat3 rotation_between(const Vec3& u, const Vec3& v) { todo("rotation_between"); }
+
 }  // namespace rigid

@@ -83,4 +83,15 @@ double geodesic_angle(const Mat3& R1, const Mat3& R2) {
     return std::atan2(sine_axis.norm(), cosine);
 }
 
+Mat3 rotation_between(const Vec3& u, const Vec3& v) {
+    const Vec3 from = require_axis(u, "from"), to = require_axis(v, "to");
+    Vec3 axis = from.cross(to);
+    const double sine = axis.norm(), cosine = from.dot(to);
+    if (sine == 0) {
+        if (cosine > 0) return Mat3::Identity();
+        axis = from.unitOrthogonal();  // opposite: a half turn about any axis across
+    }
+    return Eigen::AngleAxisd(std::atan2(sine, cosine), axis.normalized()).toRotationMatrix();
+}
+
 }  // namespace rigid

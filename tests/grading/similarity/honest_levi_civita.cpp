@@ -147,4 +147,28 @@ double geodesic_angle(const Mat3& R1, const Mat3& R2) {
     return std::atan2(std::sqrt(s2) / 2, (D(0, 0) + D(1, 1) + D(2, 2) - 1) / 2);
 }
 
+// The plane of u and v turns into itself: about their cross product (by the Levi-Civita
+// symbol), by the angle between them.
+Mat3 rotation_between(const Vec3& u, const Vec3& v) {
+    const Vec3 p = require_axis(u, "u"), q = require_axis(v, "v");
+    Vec3 n = Vec3::Zero();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) n(i) += levi_civita(i, j, k) * p(j) * q(k);
+    const double dot = p(0) * q(0) + p(1) * q(1) + p(2) * q(2);
+    if (n.norm() == 0) {
+        if (dot > 0) return Mat3::Identity();
+        // Half turn about a direction across p: p with one zero and two swapped components.
+        int big = 0;
+        for (int i = 1; i < 3; ++i)
+            if (std::abs(p(i)) > std::abs(p(big))) big = i;
+        const int next = (big + 1) % 3;
+        Vec3 across = Vec3::Zero();
+        across(big) = -p(next);
+        across(next) = p(big);
+        return rotation_about(across, std::atan2(0.0, -1.0));
+    }
+    return rotation_about(n, std::atan2(n.norm(), dot));
+}
+
 }  // namespace rigid

@@ -109,4 +109,20 @@ double geodesic_angle(const Mat3& R1, const Mat3& R2) {
     return std::atan2(s, c);
 }
 
+// The half-way quaternion: (1 + u.v, u x v), normalised, turns u into v by the angle between them.
+Mat3 rotation_between(const Vec3& u, const Vec3& v) {
+    const Vec3 a = require_axis(u, "u"), b = require_axis(v, "v");
+    Quat q;
+    q << 1 + a.dot(b), a.cross(b);
+    if (q.norm() < 1e-12) {  // opposite directions: a half turn about any axis across a
+        const Vec3 e = std::abs(a.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+        const Vec3 axis = a.cross(e).normalized();
+        q << 0, axis;
+    }
+    q.normalize();
+    const double w = q(0);
+    const Vec3 x = q.tail<3>();
+    return (w * w - x.squaredNorm()) * Mat3::Identity() + 2 * x * x.transpose() + 2 * w * hat(x);
+}
+
 }  // namespace rigid
