@@ -104,6 +104,10 @@ See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
 Do something, somewhere, and check it somehow.
 ]=])
 
+# Its table of contents, read as the build reads the workbook's (cmake/contents.cmake).
+include("${ROOT}/cmake/contents.cmake")
+workbook_read_contents("${tree}" "${tree}/contents.json" _)
+
 set(failures "")
 # check(<name> <regex>... COMMAND <command...>): the command must fail and print every regex.
 function(check name)
@@ -144,13 +148,14 @@ check("book --check-structure"
   EXPECT "does not open with '\\*\\*Before you start" "has no '## Errata' section"
          "do not say where to work" "do not show how to check the work" "its last section is '## 2.1"
          "must name a chapter of the contents \\(1..2\\), not '9'" "this one has none" "has 4 cells"
-  COMMAND "${BOOK}" --check-structure "${tree}")
+  COMMAND "${BOOK}" --check-structure "${tree}" --contents "${tree}/contents.json")
 check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
          "'mini_scene.not_measured' is -1 in the run 'default'" "has no run 'quick'"
          "comes from the run 'long' with --long no"
-  COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict)
+  COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict
+          --contents "${tree}/contents.json")
 check("book --check-figures"
   EXPECT "chapters/01_mini/mini_scene.cpp:2: gnuplot's [{]/Symbol [.][.][.][}] escape"
          "chapters/01_mini/mini_scene.cpp:3: gnuplot's" "escape.svg: its text has gnuplot's"

@@ -2,12 +2,13 @@
 // HTML pages that work offline (pandoc, math as MathML, no script).
 //
 //   book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>]
-//        [--label <text>] [--strict]
-//   book --check-structure <root>
+//        [--label <text>] [--strict] --contents <contents.json>
+//   book --check-structure <root> --contents <contents.json>
 //   book --check-figures <root> <folder>...
 //
-// --render: chapters/README.md is the table of contents; each row that links
-// (NN_slug/README.md) is a chapter, in that order. Pages: index.html (the contents),
+// --contents: the table of contents, chapters/README.md, as CMake read it (cmake/contents.cmake
+// writes <build>/contents.json): its chapters are the book's, in that order.
+// --render: Pages: index.html (the contents),
 // NN_slug.html per chapter, errata.html, hints.html, workbook.html (the top README), any
 // other .md the pages link to, and code/<path>.html for each source file they link to.
 // A value marker shows the value of its run (run=..., declared in <runs.txt>) from the report
@@ -93,14 +94,17 @@ std::string first_heading(const fs::path& md) {
     return md.stem().string();
 }
 
-// The chapters, in the order of the table of contents.
-std::vector<std::string> chapter_list(const fs::path& root) {
-    const std::regex row(R"(\]\(([0-9][0-9]_[a-z0-9_]+)/README\.md\))");
+// The table of contents as CMake read it from chapters/README.md (cmake/contents.cmake):
+// <build>/contents.json, named by --contents.
+fs::path contents_file;
+
+// The chapters' folders, in the order of the table of contents.
+std::vector<std::string> chapter_list(const fs::path& /*root*/) {
+    if (contents_file.empty())
+        throw std::runtime_error("--contents <build>/contents.json is required (CMake writes it from chapters/README.md)");
     std::vector<std::string> out;
-    for (const auto& l : prose::read_lines(root / "chapters" / "README.md")) {
-        std::smatch m;
-        if (std::regex_search(l, m, row)) out.push_back(m[1]);
-    }
+    const auto contents = prose::read_json(contents_file);
+    for (const auto& c : contents.at("chapters")) out.push_back(c.at("folder").get<std::string>());
     return out;
 }
 
@@ -791,8 +795,8 @@ int Book::render() {
 
 int usage() {
     std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] [--label <text>]\n"
-                 "            [--strict]\n"
-                 "       book --check-structure <root>\n"
+                 "            [--strict] --contents <contents.json>\n"
+                 "       book --check-structure <root> --contents <contents.json>\n"
                  "       book --check-figures <root> <folder of SVG figures>...\n";
     return 2;
 }
@@ -801,6 +805,13 @@ int usage() {
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
+    // --contents <file>, before or after the mode: the table of contents for every mode.
+    for (std::size_t i = 0; i + 1 < args.size(); ++i)
+        if (args[i] == "--contents") {
+            contents_file = fs::absolute(args[i + 1]);
+            args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+            break;
+        }
     try {
         if (args.size() == 2 && args[0] == "--check-structure") return check_structure(fs::absolute(args[1]));
         if (args.size() >= 2 && args[0] == "--check-figures") {

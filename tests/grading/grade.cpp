@@ -371,37 +371,42 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
     std::string summary = std::to_string(passed) + " of " + std::to_string(r.tests.size()) + " tests pass; score " +
                           format_number(r.score) + " of " + format_number(r.max_score) + ".";
     for (const auto& n : r.notes) summary += "\n" + n;
-    std::string out = "{\n";
-    out += "  \"score\": " + format_number(r.score) + ",\n";
-    out += "  \"output\": " + json_string(summary) + ",\n";
-    out += "  \"visibility\": \"visible\",\n";
-    out += "  \"stdout_visibility\": \"hidden\",\n";
-    out += "  \"extra_data\": {\"student\": " + json_string(r.student) + ", \"max_score\": " + format_number(r.max_score) +
-           ", \"harness\": " + json_string(harness_version) + ", \"fingerprint\": " + json_string(r.fingerprint) + "},\n";
-    out += "  \"tests\": [";
+    nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     std::string chapter;
     int in_chapter = 0;
-    for (std::size_t k = 0; k < r.tests.size(); ++k) {
-        const TestResult& t = r.tests[k];
+    for (const TestResult& t : r.tests) {
         const Chapter* c = find_chapter(setup, t.chapter);
         in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
         chapter = t.chapter;
         std::string text = t.verdict == "pass" ? "pass" : t.verdict + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
-        out += k ? ",\n" : "\n";
-        out += "    {\"name\": " + json_string(t.name) + ", \"score\": " + format_number(t.score) +
-               ", \"max_score\": " + format_number(t.max_score) + ", \"status\": \"" +
-               (t.verdict == "pass" ? "passed" : "failed") + "\",\n";
-        out += "     \"number\": " + json_string((c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)) +
-               ", \"tags\": [" + json_string(t.chapter) + ", " + json_string(t.topic) + ", " + json_string(t.exercise) +
-               "], \"visibility\": \"visible\",\n";
-        out += "     \"output\": " + json_string(text) + ",\n";
-        out += "     \"extra_data\": {\"verdict\": " + json_string(t.verdict) + ", \"chapter\": " + json_string(t.chapter) +
-               ", \"topic\": " + json_string(t.topic) + ", \"exercise\": " + json_string(t.exercise) +
-               ", \"not_started\": " + (t.not_started ? "true" : "false") + "}}";
+        tests.push_back({{"name", t.name},
+                         {"score", json_number(t.score)},
+                         {"max_score", json_number(t.max_score)},
+                         {"status", t.verdict == "pass" ? "passed" : "failed"},
+                         {"number", (c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)},
+                         {"tags", {t.chapter, t.topic, t.exercise}},
+                         {"visibility", "visible"},
+                         {"output", text},
+                         {"extra_data",
+                          {{"verdict", t.verdict},
+                           {"chapter", t.chapter},
+                           {"topic", t.topic},
+                           {"exercise", t.exercise},
+                           {"not_started", t.not_started}}}});
     }
-    out += "\n  ]\n}\n";
-    return out;
+    const nlohmann::ordered_json out = {
+        {"score", json_number(r.score)},
+        {"output", summary},
+        {"visibility", "visible"},
+        {"stdout_visibility", "hidden"},
+        {"extra_data",
+         {{"student", r.student},
+          {"max_score", json_number(r.max_score)},
+          {"harness", harness_version},
+          {"fingerprint", r.fingerprint}}},
+        {"tests", tests}};
+    return json_text(out);
 }
 
 namespace {

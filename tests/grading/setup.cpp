@@ -69,7 +69,8 @@ std::string compile_template(const std::string& compile_commands, const std::vec
 
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
-    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "solutions"}) {
+    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "exercises/provided/rigid",
+                               "solutions", "solutions/reference"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
@@ -102,7 +103,7 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
     bool ok = false;
     const std::string facts = read_file(topics_path, &ok);
     if (!ok) return "cannot read " + topics_path;
-    std::string root;
+    std::string root, contents;
     struct Listed {
         std::string topic, chapter, reference;
     };
@@ -110,6 +111,7 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
     for (const auto& line : split(facts, '\n')) {
         const auto f = split(line, '\t');
         if (f[0] == "root" && f.size() > 1) root = f[1];
+        else if (f[0] == "contents" && f.size() > 1) contents = f[1];
         else if (f[0] == "topic" && f.size() > 2) topics.push_back({f[1], f[2], ""});
         else if (f[0] == "reference" && f.size() > 1 && !topics.empty()) topics.back().reference = f[1];
     }
@@ -129,20 +131,16 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
         points[name] = p;
         used[name] = false;
     }
-    // Chapter titles from the table of contents.
+    // Chapter titles from the table of contents, as CMake read it (<build>/contents.json).
     std::map<std::string, Chapter> chapters;
-    for (const auto& line : split(read_file(root + "/chapters/README.md"), '\n')) {
-        const auto close = line.find("/README.md)");
-        const auto open = line.rfind("](", close);
-        const auto bracket = line.rfind('[', open);
-        if (close == std::string::npos || open == std::string::npos || bracket == std::string::npos) continue;
-        Chapter c;
-        c.slug = line.substr(open + 2, close - open - 2);
-        c.title = line.substr(bracket + 1, open - bracket - 1);
-        if (c.slug.size() < 3 || !isdigit(static_cast<unsigned char>(c.slug[0])) || !isdigit(static_cast<unsigned char>(c.slug[1]))) continue;
-        c.number = std::stoi(c.slug.substr(0, 2));
-        c.label = "ch" + c.slug.substr(0, 2);
-        chapters[c.label] = c;
+    const std::string contents_text = read_file(contents, &ok);
+    if (!ok) return "cannot read the table of contents " + contents + " (" + topics_path + " names it)";
+    const nlohmann::json toc = nlohmann::json::parse(contents_text, nullptr, false);
+    if (!toc.is_object() || !toc.contains("chapters") || !toc["chapters"].is_array())
+        return contents + ": not the table of contents CMake writes ({\"chapters\": [...]})";
+    for (const auto& c : toc["chapters"]) {
+        const std::string label = c.value("label", "");
+        chapters[label] = Chapter{label, c.value("number", 0), c.value("folder", ""), c.value("title", "")};
     }
 
     std::string out =

@@ -413,15 +413,19 @@ int grade(const Args& a) {
         std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
         char host[256] = "";
         gethostname(host, sizeof host - 1);
-        std::string run = "{\n  \"finished\": " + json_string(date) + ",\n  \"host\": " + json_string(host) +
-                          ",\n  \"jobs\": " + std::to_string(jobs) + ",\n  \"wall_seconds\": " + format_number(wall) +
-                          ",\n  \"graded\": " + std::to_string(graded) + ",\n  \"already_graded\": " +
-                          std::to_string(items.size() - graded) + ",\n  \"submissions\": [";
-        for (std::size_t k = 0; k < items.size(); ++k)
-            run += std::string(k ? ",\n" : "\n") + "    {\"student\": " + json_string(items[k].name) +
-                   ", \"graded_in_this_run\": " + (items[k].graded ? "true" : "false") + ", \"wall_seconds\": " +
-                   format_number(items[k].seconds) + ", \"cpu_seconds\": " + format_number(items[k].cpu) + "}";
-        run += "\n  ]\n}\n";
+        nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+        for (const auto& item : items)
+            runs.push_back({{"student", item.name},
+                            {"graded_in_this_run", item.graded},
+                            {"wall_seconds", json_number(item.seconds)},
+                            {"cpu_seconds", json_number(item.cpu)}});
+        const std::string run = json_text({{"finished", date},
+                                           {"host", host},
+                                           {"jobs", jobs},
+                                           {"wall_seconds", json_number(wall)},
+                                           {"graded", graded},
+                                           {"already_graded", items.size() - graded},
+                                           {"submissions", runs}});
         write_file(out + "/run.json", run);
         std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n", out.c_str(), out.c_str(),
                     out.c_str());
