@@ -695,3 +695,27 @@ function(workbook_grading)
     add_dependencies(grading grading_replay)  # record and replay (tests/grading/CMakeLists.txt)
   endif()
 endfunction()
+
+# ------------------------------------------------------------------------------------------
+# Short functions in the workbook's own tools (cmake/tools/, tests/grading/): none over
+# WORKBOOK_FUNCTION_LINES lines, by clang-tidy's readability-function-size (cmake/function_size.cmake;
+# Debian's clang-tidy, which cmake/workbook test installs). A second test proves the check can fail.
+set(WORKBOOK_FUNCTION_LINES 60 CACHE STRING "The longest function allowed in cmake/tools and tests/grading")
+function(workbook_function_size)
+  find_program(CLANG_TIDY_EXECUTABLE NAMES clang-tidy clang-tidy-14)
+  set(tidy "${CLANG_TIDY_EXECUTABLE}")
+  if(NOT tidy)
+    set(tidy "")
+  endif()
+  set(script "${WORKBOOK_ROOT}/cmake/function_size.cmake")
+  set(check "code: no function in cmake/tools or tests/grading is over ${WORKBOOK_FUNCTION_LINES} lines")
+  set(selftest "code: the function-size check flags a function one line too long")
+  add_test(NAME "${check}"
+           COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DROOT=${WORKBOOK_ROOT} -DBUILD=${CMAKE_BINARY_DIR}
+                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  add_test(NAME "${selftest}"
+           COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size
+                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 900
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: clang-tidy was not found")
+endfunction()
