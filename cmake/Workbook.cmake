@@ -716,6 +716,6 @@ function(workbook_function_size)
   add_test(NAME "${selftest}"
            COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size
                    -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
-  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 900
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 1800
                        SKIP_REGULAR_EXPRESSION "SKIPPED: clang-tidy was not found")
 endfunction()

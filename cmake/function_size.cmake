@@ -18,7 +18,7 @@ set(config "{CheckOptions: [{key: readability-function-size.LineThreshold, value
 set(tidy_args --quiet "--checks=-*,readability-function-size" "--config=${config}" "--warnings-as-errors=*"
               --extra-arg=-Wno-unknown-warning-option)
 
-# The functions over the limit in `files`, one "path:line: function 'name'" a line.
+# The functions over the limit in `files`, one "path: function 'name'" a line.
 function(long_functions out)
   set(found "")
   foreach(file IN LISTS ARGN)
@@ -26,7 +26,7 @@ function(long_functions out)
                     RESULT_VARIABLE rc OUTPUT_VARIABLE text ERROR_VARIABLE err)
     string(REGEX MATCHALL "[^\n]*: (warning|error): function '[^']+' exceeds recommended size/complexity" hits "${text}")
     foreach(hit IN LISTS hits)
-      string(REGEX REPLACE ":[0-9]+: (warning|error): (function '[^']+').*" ": \\2" hit "${hit}")
+      string(REGEX REPLACE ":[0-9]+:[0-9]+: (warning|error): (function '[^']+').*" ": \\2" hit "${hit}")
       list(APPEND found "${hit}")
     endforeach()
     if(NOT rc EQUAL 0 AND NOT hits)

@@ -321,15 +321,9 @@ TEST_CASE("critical_h: is where a bisection on the eigen-solver finds B = C") {
         const double c2 = rigid::critical_cos2(b) * checks::uniform(0, 0.95);
         const Vec3 z(std::sqrt(c2), 0, (n % 2 ? -1 : 1) * std::sqrt(1 - c2));
         // Bisection on g(h) = C - B from the eigen-solver: positive at h = 0, negative far out.
-        auto g = [&](double h) {
-            const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-            return e.C - e.B;
-        };
-        double lo = 0, hi = b.C_g;
-        while (g(hi) > 0) hi *= 2;
-        for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+        const auto x = inertia_reference::crossing_by_bisection(b, z);
         CAPTURE(c2);
-        CHECK_NEAR(rigid::critical_h(b, z), 0.5 * (lo + hi), 1e-9 * hi);
+        CHECK_NEAR(rigid::critical_h(b, z), x.h(), 1e-9 * x.hi);
     }
     // At and above the critical angle the line never meets the hyperbola.
     CHECK(rigid::critical_h(body0, rigid::shift_direction(0.0)) == inf_);
@@ -362,14 +356,7 @@ TEST_CASE("hyperbola_lhs: is 1 where B = C and 0 on the asymptotes") {
         const double c2 = rigid::critical_cos2(b) * checks::uniform(0, 0.95);
         const Vec3 z(std::sqrt(c2), 0, std::sqrt(1 - c2));
         // The crossing from the eigen-solver (bisection), then the point L z on the plane.
-        auto g = [&](double h) {
-            const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-            return e.C - e.B;
-        };
-        double lo = 0, hi = b.C_g;
-        while (g(hi) > 0) hi *= 2;
-        for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-        const double L = std::sqrt(0.5 * (lo + hi) / b.mu);
+        const double L = std::sqrt(inertia_reference::crossing_by_bisection(b, z).h() / b.mu);
         CHECK_NEAR(rigid::hyperbola_lhs(b, L * z.x(), L * z.z()), 1.0, 1e-8);
         // On a line at the critical angle, (5.15), at any distance.
         const double k = std::sqrt((b.C_g - b.B_g) / (b.B_g - b.A_g));

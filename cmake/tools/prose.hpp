@@ -406,75 +406,90 @@ private:
     std::map<std::string, std::unique_ptr<Json>> cache_;
 };
 
+// A walk down a report along a key path: `node` the place reached, `row_columns` the columns of
+// the table when `node` is one of its rows, `at` the path so far (for the messages).
+struct ReportWalk {
+    const Json* node;
+    const Json* row_columns = nullptr;
+    std::string at;
+
+    static const Json* field(const Json* n, const char* key) {
+        return n->is_object() && n->contains(key) ? &(*n)[key] : nullptr;
+    }
+    static bool is_table(const Json* n) { return field(n, "columns") && field(n, "rows"); }
+    static std::size_t column(const Json* cols, const std::string& name) {
+        std::size_t c = 0;
+        while (c < cols->size() && !((*cols)[c].is_string() && (*cols)[c].get<std::string>() == name)) ++c;
+        return c;
+    }
+
+    // .key: a field, or the cell of a table row.
+    void key(const std::string& key) {
+        if (row_columns) {
+            const std::size_t c = column(row_columns, key);
+            if (c >= row_columns->size() || !node->is_array() || c >= node->size())
+                throw std::runtime_error(at + " has no column '" + key + "'");
+            node = &(*node)[c];
+            row_columns = nullptr;
+        } else if (node->is_object()) {
+            const Json* next = field(node, key.c_str());
+            if (!next) {
+                std::string known;
+                for (const auto& f : node->items()) known += (known.empty() ? "" : ", ") + f.key();
+                throw std::runtime_error(at + " has no key '" + key + "' (it has: " + known + ")");
+            }
+            node = next;
+        } else {
+            throw std::runtime_error(at + " is not an object, so it has no key '" + key + "'");
+        }
+    }
+
+    // [i]: an item of a list, or row i of a table.
+    void item(const std::string& index) {
+        const std::size_t i = std::stoul(index);
+        const Json* cols = is_table(node) ? field(node, "columns") : nullptr;
+        const Json* list = cols ? field(node, "rows") : node;
+        if (row_columns || !list->is_array() || i >= list->size()) throw std::runtime_error(at + " has no item [" + index + "]");
+        node = &(*list)[i];
+        row_columns = cols;
+    }
+
+    // [column=x]: the row of a table whose column equals x.
+    void row(const std::string& name, const std::string& wanted) {
+        if (row_columns || !is_table(node))
+            throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + name + "=" + wanted + "]");
+        const Json* cols = field(node, "columns");
+        const std::size_t c = column(cols, name);
+        if (c == cols->size()) throw std::runtime_error(at + " has no column '" + name + "'");
+        char* end = nullptr;
+        const double x = std::strtod(wanted.c_str(), &end);
+        const Json* found = nullptr;
+        for (const auto& r : *field(node, "rows"))
+            if (r.is_array() && c < r.size() && r[c].is_number() && r[c].get<double>() == x) found = &r;
+        if (!found || *end != '\0') throw std::runtime_error(at + " has no row with " + name + " = " + wanted);
+        node = found;
+        row_columns = cols;
+    }
+};
+
 // Follows `path` (the part after the scene name) into a report. Throws saying what is missing.
 inline const Json& lookup(const Json& report, const std::string& path) {
     static const std::regex step(
         R"(^\.([A-Za-z_][A-Za-z0-9_]*)|^\[([0-9]+)\]|^\[([A-Za-z_][A-Za-z0-9_]*)=([^\]]+)\])");
-    const Json* node = &report;
-    const Json* row_columns = nullptr;  // set while node is a row of a table
+    ReportWalk walk{&report, nullptr, "the report"};
     std::string rest = path, done;
-    auto field = [](const Json* n, const char* key) -> const Json* {
-        return n->is_object() && n->contains(key) ? &(*n)[key] : nullptr;
-    };
-    auto is_table = [&](const Json* n) { return field(n, "columns") && field(n, "rows"); };
-    auto column = [](const Json* cols, const std::string& name) {
-        std::size_t c = 0;
-        while (c < cols->size() && !((*cols)[c].is_string() && (*cols)[c].get<std::string>() == name)) ++c;
-        return c;
-    };
     while (!rest.empty()) {
         std::smatch m;
         if (!std::regex_search(rest, m, step)) throw std::runtime_error("cannot read the key path at '" + rest + "'");
-        const std::string at = done.empty() ? "the report" : "'" + done + "'";
-        if (m[1].matched) {  // .key: a field, or the cell of a table row
-            const std::string key = m[1];
-            if (row_columns) {
-                const std::size_t c = column(row_columns, key);
-                if (c >= row_columns->size() || !node->is_array() || c >= node->size())
-                    throw std::runtime_error(at + " has no column '" + key + "'");
-                node = &(*node)[c];
-                row_columns = nullptr;
-            } else if (node->is_object()) {
-                const Json* next = field(node, key.c_str());
-                if (!next) {
-                    std::string known;
-                    for (const auto& f : node->items()) known += (known.empty() ? "" : ", ") + f.key();
-                    throw std::runtime_error(at + " has no key '" + key + "' (it has: " + known + ")");
-                }
-                node = next;
-            } else {
-                throw std::runtime_error(at + " is not an object, so it has no key '" + key + "'");
-            }
-        } else if (m[2].matched) {  // [i]: an item of a list, or row i of a table
-            const std::size_t i = std::stoul(m[2]);
-            const Json* cols = is_table(node) ? field(node, "columns") : nullptr;
-            const Json* list = cols ? field(node, "rows") : node;
-            if (row_columns || !list->is_array() || i >= list->size())
-                throw std::runtime_error(at + " has no item [" + m[2].str() + "]");
-            node = &(*list)[i];
-            row_columns = cols;
-        } else {  // [column=x]: the row of a table whose column equals x
-            if (row_columns || !is_table(node))
-                throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + m[3].str() +
-                                         "=" + m[4].str() + "]");
-            const Json* cols = field(node, "columns");
-            const std::size_t c = column(cols, m[3]);
-            if (c == cols->size()) throw std::runtime_error(at + " has no column '" + m[3].str() + "'");
-            const std::string wanted = m[4];
-            char* end = nullptr;
-            const double x = std::strtod(wanted.c_str(), &end);
-            const Json* found = nullptr;
-            for (const auto& r : *field(node, "rows"))
-                if (r.is_array() && c < r.size() && r[c].is_number() && r[c].get<double>() == x) found = &r;
-            if (!found || *end != '\0') throw std::runtime_error(at + " has no row with " + m[3].str() + " = " + m[4].str());
-            node = found;
-            row_columns = cols;
-        }
+        walk.at = done.empty() ? "the report" : "'" + done + "'";
+        if (m[1].matched) walk.key(m[1]);
+        else if (m[2].matched) walk.item(m[2]);
+        else walk.row(m[3], m[4]);
         done += m[0].str();
         rest = m.suffix();
     }
-    if (row_columns) throw std::runtime_error("'" + done + "' is a whole table row: name a column, e.g. '.x'");
-    return *node;
+    if (walk.row_columns) throw std::runtime_error("'" + done + "' is a whole table row: name a column, e.g. '.x'");
+    return *walk.node;
 }
 
 // The text a marker shows for its value in `report`. Throws saying what is missing, or that

@@ -43,6 +43,24 @@ inline EigenMoments eigen_moments(const Mat3& I) {
             es.eigenvectors().col(iA), es.eigenvectors().col(iB), es.eigenvectors().col(iC)};
 }
 
+// Where B = C on the line z below the critical angle, found by the eigen-solver alone: a bisection
+// on g(h) = C - B (positive at h = 0, negative far out) to 1e-15 relative; h = mu L^2 lies in
+// [lo, hi], and h() is the midpoint.
+struct Crossing {
+    double lo, hi;
+    double h() const { return 0.5 * (lo + hi); }
+};
+inline Crossing crossing_by_bisection(const BodyAtG& b, const Vec3& z) {
+    auto g = [&](double h) {
+        const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
+        return e.C - e.B;
+    };
+    double lo = 0, hi = b.C_g;
+    while (g(hi) > 0) hi *= 2;
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+    return {lo, hi};
+}
+
 // The binary128 reference for a double z = (zA, 0, zC).
 inline quadref::Moments quad_moments(const BodyAtG& b, double L, const Vec3& z) {
     return quadref::moments(b.A_g, b.B_g, b.C_g, b.mu, L, z.x(), z.z());
