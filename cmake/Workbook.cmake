@@ -3,6 +3,7 @@
 include_guard(GLOBAL)
 
 get_filename_component(WORKBOOK_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+include(contents)  # workbook_read_contents(): the table of contents, read once
 
 include("${CMAKE_CURRENT_LIST_DIR}/pristine_stubs.cmake")  # WORKBOOK_PRISTINE_DIR: the stubs as committed
 
@@ -32,6 +33,10 @@ macro(workbook_find_dependencies)
     workbook_missing("doctest (the graders' test framework)" doctest-dev)
   endif()
   include(doctest)  # doctest_discover_tests(), shipped with doctest-dev
+  find_package(nlohmann_json 3 QUIET)
+  if(NOT nlohmann_json_FOUND)
+    workbook_missing("nlohmann-json (every JSON the tools and the grading run read or write)" nlohmann-json3-dev)
+  endif()
   find_package(Boost 1.65 QUIET COMPONENTS iostreams filesystem)
   if(NOT Boost_FOUND)
     workbook_missing("Boost.Iostreams and Boost.Filesystem (used by gnuplot-iostream)"
@@ -78,9 +83,22 @@ function(workbook_resolve_impl)
 endfunction()
 
 # ------------------------------------------------------------------------------------------
-# One API topic: exercises/rigid/<name>.hpp, with solutions/<name>.cpp and exercises/<name>.cpp.
+# Where the headers are, each folder one role, each included as "rigid/<name>.hpp":
+#   exercises/rigid/           the student's API: one header per topic, what they implement
+#   exercises/provided/rigid/  the code given to them: vocabulary types, input checks, todo(),
+#                              the GSL wrapper, the stepping driver, the Taylor and exact references
+# and, for tests and scenes only, solutions/reference/ ("reference/<name>.hpp"): the independent
+# computations the graders and the scenes both check the exercises against.
+set(WORKBOOK_API_INCLUDES "${WORKBOOK_ROOT}/exercises" "${WORKBOOK_ROOT}/exercises/provided")
+add_library(workbook_reference INTERFACE)
+target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/solutions")
+
+# ------------------------------------------------------------------------------------------
+# One API topic: exercises/rigid/<name>.hpp, with solutions/<name>.cpp, exercises/<name>.cpp and
+# its graders tests/<name>_test.cpp; declared here once, with the chapter (label chNN of the
+# contents) that teaches it.
 #
-#   workbook_topic(<name> [DEPENDS <topic>...] [LIBS <target>...])
+#   workbook_topic(<name> CHAPTER <chNN> [DEPENDS <topic>...] [LIBS <target>...])
 #
 # Makes rigid_<name> from the chosen implementation (WORKBOOK_IMPL; only the topics listed in
 # WORKBOOK_TOPICS when that is set), and for the stub gate rigid_<name>_solutions and
@@ -88,7 +106,7 @@ endfunction()
 # each topic's graders see only that topic's stubs.
 function(_workbook_topic_library target source deps libs)
   add_library(${target} STATIC "${source}")
-  target_include_directories(${target} PUBLIC "${WORKBOOK_ROOT}/exercises")
+  target_include_directories(${target} PUBLIC ${WORKBOOK_API_INCLUDES})
   target_link_libraries(${target} PUBLIC Eigen3::Eigen ${deps} ${libs})
   workbook_warnings(${target})
   get_filename_component(dir "${source}" DIRECTORY)
@@ -99,7 +117,7 @@ function(_workbook_topic_library target source deps libs)
 endfunction()
 
 function(workbook_topic name)
-  cmake_parse_arguments(T "" "" "DEPENDS;LIBS" ${ARGN})
+  cmake_parse_arguments(T "" "CHAPTER" "DEPENDS;LIBS" ${ARGN})
   set(impl_dir "${WORKBOOK_IMPL_DIR}")
   if(WORKBOOK_TOPICS AND NOT name IN_LIST WORKBOOK_TOPICS)
     set(impl_dir "${WORKBOOK_ROOT}/solutions")
@@ -124,17 +142,24 @@ function(workbook_topic name)
     _workbook_topic_library(rigid_${name}_stubs "${WORKBOOK_PRISTINE_DIR}/${name}.cpp" "${ref_deps}" "${T_LIBS}")
   endif()
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_TOPIC_LIST ${name})
+  # Its graders, tests/<name>_test.cpp, labelled with its chapter of the contents.
+  get_property(labels GLOBAL PROPERTY WORKBOOK_CHAPTER_LABELS)
+  if(NOT T_CHAPTER IN_LIST labels)
+    string(REPLACE ";" " " labels "${labels}")
+    message(FATAL_ERROR "workbook_topic(${name}): CHAPTER '${T_CHAPTER}' is not a chapter of chapters/README.md (they are: ${labels})")
+  endif()
+  workbook_grader(${name} CHAPTER ${T_CHAPTER})
 endfunction()
 
-# A provided library: code in exercises/rigid/ that the workbook gives the student (not an
-# exercise), the same in every implementation. Topics may DEPENDS on it like on a topic.
+# A provided library: code in exercises/provided/rigid/ that the workbook gives the student (not
+# an exercise), the same in every implementation. Topics may DEPENDS on it like on a topic.
 #
 #   workbook_provided(<name> SOURCES <file>... [LIBS <target>...])
 function(workbook_provided name)
   cmake_parse_arguments(P "" "" "SOURCES;LIBS" ${ARGN})
   list(TRANSFORM P_SOURCES PREPEND "${WORKBOOK_ROOT}/")
   add_library(rigid_${name} STATIC ${P_SOURCES})
-  target_include_directories(rigid_${name} PUBLIC "${WORKBOOK_ROOT}/exercises")
+  target_include_directories(rigid_${name} PUBLIC ${WORKBOOK_API_INCLUDES})
   target_link_libraries(rigid_${name} PUBLIC Eigen3::Eigen ${P_LIBS})
   workbook_warnings(rigid_${name})
   add_library(rigid_${name}_solutions ALIAS rigid_${name})
@@ -164,7 +189,7 @@ function(workbook_grader topic)
   add_library(grade_${topic}_objects OBJECT "${WORKBOOK_ROOT}/tests/${topic}_test.cpp")
   target_include_directories(grade_${topic}_objects PRIVATE "${WORKBOOK_ROOT}/tests"
                              $<TARGET_PROPERTY:rigid_${topic},INTERFACE_INCLUDE_DIRECTORIES>)
-  target_link_libraries(grade_${topic}_objects PRIVATE doctest::doctest Eigen3::Eigen)
+  target_link_libraries(grade_${topic}_objects PRIVATE doctest::doctest Eigen3::Eigen workbook_reference)
   workbook_warnings(grade_${topic}_objects)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_GRADER_LIST "${topic}|${G_CHAPTER}")
   foreach(flavour IN ITEMS "" _solutions _stubs)
@@ -334,21 +359,30 @@ endfunction()
 
 # ------------------------------------------------------------------------------------------
 # The chapters, in the order of chapters/README.md: the one list that drives book and build.
+# workbook_contents() reads it (cmake/contents.cmake) into <build>/contents.json, the one copy the
+# tools read; call it before the topics (each names its chapter). workbook_chapters() then adds
+# the chapters' folders.
+function(workbook_contents)
+  set(json "${CMAKE_BINARY_DIR}/contents.json")
+  workbook_read_contents("${WORKBOOK_ROOT}" "${json}" chapters)
+  set_property(DIRECTORY "${CMAKE_SOURCE_DIR}" APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${WORKBOOK_ROOT}/chapters/README.md")
+  set(labels "")
+  foreach(ch IN LISTS chapters)
+    list(APPEND labels "ch${ch}")
+  endforeach()
+  list(TRANSFORM labels REPLACE "^(ch[0-9][0-9]).*" "\\1")
+  set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST ${chapters})
+  set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LABELS ${labels})
+  set_property(GLOBAL PROPERTY WORKBOOK_CONTENTS "${json}")
+endfunction()
+
 function(workbook_chapters)
-  file(STRINGS "${WORKBOOK_ROOT}/chapters/README.md" lines REGEX "\\]\\([0-9][0-9]_[a-z0-9_]+/README\\.md\\)")
-  set(chapters "")
-  foreach(line IN LISTS lines)
-    string(REGEX MATCH "\\(([0-9][0-9]_[a-z0-9_]+)/README\\.md\\)" _ "${line}")
-    set(ch "${CMAKE_MATCH_1}")
-    if(NOT IS_DIRECTORY "${WORKBOOK_ROOT}/chapters/${ch}")
-      message(FATAL_ERROR "chapters/README.md lists ${ch}, but chapters/${ch}/ does not exist")
-    endif()
-    list(APPEND chapters "${ch}")
+  get_property(chapters GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST)
+  foreach(ch IN LISTS chapters)
     if(EXISTS "${WORKBOOK_ROOT}/chapters/${ch}/CMakeLists.txt")
       add_subdirectory("${WORKBOOK_ROOT}/chapters/${ch}" "${CMAKE_BINARY_DIR}/chapters/${ch}")
     endif()
   endforeach()
-  set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST ${chapters})
 endfunction()
 
 # ------------------------------------------------------------------------------------------
@@ -371,7 +405,8 @@ function(workbook_main_job)
   set(figures "${CMAKE_BINARY_DIR}/figures")
   set_property(GLOBAL PROPERTY WORKBOOK_FIGURES_DIR "${figures}")
   # After the scenes, the book: rendered with the numbers and figures of this very run.
-  set(book "$<TARGET_FILE:book_tool>|--render|${WORKBOOK_ROOT}|--runs|${CMAKE_BINARY_DIR}/runs.txt"
+  get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
+  set(book "$<TARGET_FILE:book_tool>|--render|${WORKBOOK_ROOT}|--runs|${CMAKE_BINARY_DIR}/runs.txt|--contents|${contents}"
            "--figures|${figures}|--out|${CMAKE_BINARY_DIR}/book|--pandoc|${PANDOC_EXECUTABLE}"
            "--label|scenes run by cmake/workbook run on the ${WORKBOOK_IMPL} implementation")
   string(REPLACE ";" "|" book "${book}")
@@ -428,7 +463,9 @@ function(workbook_book)
 
   add_executable(snippets "${root}/cmake/tools/snippets.cpp")
   add_executable(book_tool "${root}/cmake/tools/book.cpp")
+  get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
   foreach(t snippets book_tool)
+    target_link_libraries(${t} PRIVATE nlohmann_json::nlohmann_json)
     workbook_warnings(${t})
     target_compile_options(${t} PRIVATE -O1)  # tools: quick to build, fast enough to run
     set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
@@ -442,12 +479,12 @@ function(workbook_book)
   add_test(NAME "book: the code the prose names exists"
            COMMAND snippets --check-names "${root}")
   add_test(NAME "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
-           COMMAND book_tool --check-structure "${root}")
+           COMMAND book_tool --check-structure "${root}" --contents "${contents}")
   add_test(NAME "book: every number in the prose is its run's committed value, and the scenes still report it"
            COMMAND snippets --check-values "${root}" "${runs}" "${CMAKE_BINARY_DIR}/smoke/reports")
   add_test(NAME "book: renders to HTML with MathML, its figures and no broken link"
            COMMAND book_tool --render "${root}" --runs "${runs}" --out "${test_book}" --pandoc "${PANDOC_EXECUTABLE}"
-                   --strict --label "the committed reports (figures/)")
+                   --strict --label "the committed reports (figures/)" --contents "${contents}")
   add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
            COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser")
   add_test(NAME "book: the browser checks fail on a book broken on purpose"
@@ -487,7 +524,7 @@ function(workbook_book)
     COMMENT "Refreshing the code and the numbers quoted in the chapters (numbers: from the committed reports in figures/)")
   add_custom_target(book
     COMMAND book_tool --render "${root}" --runs "${runs}" --figures "${figures}"
-            --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}"
+            --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}" --contents "${contents}"
             --label "the last cmake/workbook run on the ${WORKBOOK_IMPL} implementation"
     COMMENT "Rendering the book from the last run's reports into ${CMAKE_BINARY_DIR}/book")
 endfunction()
@@ -500,21 +537,19 @@ function(workbook_stub_gate)
   get_property(args GLOBAL PROPERTY WORKBOOK_GATE_ARGS)
   add_test(NAME "stub gate: every grading test passes on solutions and fails on the stubs"
            COMMAND stub_gate ${args})
-  # Both gate tests write stub_gate_<topic>_*.jsonl in the build folder: never run them at once.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
-                       PROPERTIES LABELS "gate" TIMEOUT 600 RESOURCE_LOCK stub_gate_xml)
+                       PROPERTIES LABELS "gate" TIMEOUT 600)
   # The gate itself must be able to fail: handed the reference as if it were the stubs,
   # it must find every test "passing on the stubs" and say so.
   list(GET args 0 topic)
   list(GET args 1 reference)
   add_test(NAME "stub gate: fails when a grader passes on its stubs"
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
-  # Both gate tests write stub_gate_<topic>_*.jsonl in the same folder: never at the same time.
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
                        LABELS "gate" WILL_FAIL TRUE)
   # Both write stub_gate_<topic>_*.jsonl in the build folder: never at the same time.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
-                       "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_xml)
+                       "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_reports)
 endfunction()
 
 # ------------------------------------------------------------------------------------------
@@ -613,6 +648,8 @@ function(workbook_grading)
   string(TOUPPER "${CMAKE_BUILD_TYPE}" config)
   set(facts "# Generated by CMake (workbook_grading in cmake/Workbook.cmake): the facts the grading run needs.\n")
   string(APPEND facts "root\t${WORKBOOK_ROOT}\n")
+  get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
+  string(APPEND facts "contents\t${contents}\n")
   string(APPEND facts "build\t${CMAKE_BINARY_DIR}\n")
   string(APPEND facts "compiler\t${CMAKE_CXX_COMPILER}\n")
   string(APPEND facts "nm\t${CMAKE_NM}\n")
@@ -651,7 +688,7 @@ function(workbook_grading)
     COMMAND workbook_grade manifest --topics "${dir}/topics.txt" --points "${points}"
             --out "${dir}/manifest.txt"
     DEPENDS workbook_grade ${references} "${dir}/topics.txt" "${points}" workbook_doctest_main
-            "${WORKBOOK_ROOT}/chapters/README.md"
+            "${contents}"
     COMMENT "Listing the graders' exercises and tests in grading/manifest.txt")
   add_custom_target(grading ALL DEPENDS "${dir}/manifest.txt")
   list(REMOVE_DUPLICATES needed)
@@ -659,4 +696,28 @@ function(workbook_grading)
   if(TARGET grading_replay)
     add_dependencies(grading grading_replay)  # record and replay (tests/grading/CMakeLists.txt)
   endif()
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# Short functions in the workbook's own tools (cmake/tools/, tests/grading/): none over
+# WORKBOOK_FUNCTION_LINES lines, by clang-tidy's readability-function-size (cmake/function_size.cmake;
+# Debian's clang-tidy, which cmake/workbook test installs). A second test proves the check can fail.
+set(WORKBOOK_FUNCTION_LINES 60 CACHE STRING "The longest function allowed in cmake/tools and tests/grading")
+function(workbook_function_size)
+  find_program(CLANG_TIDY_EXECUTABLE NAMES clang-tidy clang-tidy-14)
+  set(tidy "${CLANG_TIDY_EXECUTABLE}")
+  if(NOT tidy)
+    set(tidy "")
+  endif()
+  set(script "${WORKBOOK_ROOT}/cmake/function_size.cmake")
+  set(check "code: no function in cmake/tools or tests/grading is over ${WORKBOOK_FUNCTION_LINES} lines")
+  set(selftest "code: the function-size check flags a function one line too long")
+  add_test(NAME "${check}"
+           COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DROOT=${WORKBOOK_ROOT} -DBUILD=${CMAKE_BINARY_DIR}
+                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  add_test(NAME "${selftest}"
+           COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size
+                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 1800
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: clang-tidy was not found")
 endfunction()

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "rigid/types.hpp"
 
@@ -46,6 +49,47 @@ inline void log_margin(const char* file, int line, double err, double tol) {
         return path && *path ? std::fopen(path, "a") : nullptr;
     }();
     if (out) std::fprintf(out, "%s\t%d\t%.17g\t%.17g\n", file, line, err, tol), std::fflush(out);
+}
+
+// Values every grader feeds to a function that must reject them.
+inline constexpr double nan_ = std::numeric_limits<double>::quiet_NaN();
+inline constexpr double inf_ = std::numeric_limits<double>::infinity();
+
+// The rotation by phi about `axis` (normalised here), by Eigen's angle-axis: independent of the
+// exercises' own rotation_about.
+inline rigid::Mat3 Rot(const rigid::Vec3& axis, double phi) {
+    return Eigen::AngleAxisd(phi, axis.normalized()).toRotationMatrix();
+}
+
+// hat(w) and its inverse, written out: skew(w) v = w x v.
+inline rigid::Mat3 skew(const rigid::Vec3& w) {
+    rigid::Mat3 S;
+    S << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+    return S;
+}
+inline rigid::Vec3 unskew(const rigid::Mat3& W) {
+    return 0.5 * rigid::Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1));
+}
+
+// A random rotation: the angle uniform in [lo, hi), drawn first, then a random axis.
+inline rigid::Mat3 random_rotation(double lo, double hi) {
+    const double angle = uniform(lo, hi);
+    const rigid::Vec3 axis = random_unit();
+    return Rot(axis, angle);
+}
+
+// The message of the std::invalid_argument that f() throws; "(another exception)" or
+// "(no exception)" otherwise, so that a CHECK on the message fails with a reason.
+template <class F>
+std::string message_of(F&& f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    } catch (...) {
+        return "(another exception)";
+    }
+    return "(no exception)";
 }
 
 }  // namespace checks

@@ -20,6 +20,8 @@ using rigid::VecX;
 
 namespace {
 
+using checks::nan_;
+
 // Euler-Poisson for the free body, written out component by component: independent of the
 // student's free_body_equations and of the elliptic solution.
 VecX euler_poisson(const Vec3& I, const VecX& y) {
@@ -54,8 +56,6 @@ Integrated integrate(const Vec3& I, const Vec3& Omega0, const std::vector<double
                          {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
     return out;
 }
-
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 

@@ -19,6 +19,9 @@ using rigid::VecX;
 
 namespace {
 
+using checks::inf_;
+using checks::nan_;
+
 double eps3(int i, int j, int k) { return 0.5 * (i - j) * (j - k) * (k - i); }
 
 Vec3 random_moments() {
@@ -30,9 +33,6 @@ Vec3 random_moments() {
 Mat3 random_rotation() {
     return Eigen::AngleAxisd(checks::uniform(0, 3), checks::random_unit()).toRotationMatrix();
 }
-
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-const double inf_ = std::numeric_limits<double>::infinity();
 
 }  // namespace
 

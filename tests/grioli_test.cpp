@@ -10,7 +10,7 @@
 #include <string>
 
 #include "checks.hpp"
-#include "quad_reference.hpp"
+#include "reference/quad_inertia.hpp"
 #include "rigid/grioli.hpp"
 
 using rigid::Mat3;
@@ -20,31 +20,14 @@ using std::numbers::pi;
 
 namespace {
 
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-const double inf_ = std::numeric_limits<double>::infinity();
-
-Mat3 Rot(const Vec3& axis, double phi) { return Eigen::AngleAxisd(phi, axis.normalized()).toRotationMatrix(); }
-
-Mat3 skew(const Vec3& w) {
-    Mat3 S;
-    S << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-    return S;
-}
-
-Vec3 unskew(const Mat3& W) { return 0.5 * Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); }
+using checks::inf_;
+using checks::message_of;
+using checks::nan_;
+using checks::Rot;
+using checks::skew;
+using checks::unskew;
 
 // The message of the std::invalid_argument that f throws, or a note saying what happened.
-template <class F>
-std::string message_of(F f) {
-    try {
-        f();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    } catch (...) {
-        return "(another exception)";
-    }
-    return "(no exception)";
-}
 
 // The Moments struct built here, not by the student's moments or moments_from_gaps (graded on
 // their own): a grader of another exercise must not fail because of those two.

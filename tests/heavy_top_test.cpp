@@ -22,24 +22,15 @@ namespace {
 // of another exercise must not fail because of it.
 rigid::HeavyTop top_of(const Mat3& J, double f, const Vec3& k, const Vec3& z0) { return {J, f, k.normalized(), z0.normalized()}; }
 
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-
-Mat3 Rot(const Vec3& axis, double phi) { return Eigen::AngleAxisd(phi, axis.normalized()).toRotationMatrix(); }
-
-Mat3 skew(const Vec3& w) {
-    Mat3 S;
-    S << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-    return S;
-}
-
-Vec3 unskew(const Mat3& W) { return 0.5 * Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); }
-
-Mat3 random_rotation() { return Rot(checks::random_unit(), checks::uniform(0, pi)); }
+using checks::nan_;
+using checks::Rot;
+using checks::skew;
+using checks::unskew;
 
 // A random inertia tensor: principal moments obeying the triangle inequality, random axes.
 Mat3 random_inertia() {
     const double A = checks::uniform(1, 2), B = checks::uniform(1, 2), C = checks::uniform(std::abs(A - B) + 0.1, A + B);
-    const Mat3 Q = random_rotation();
+    const Mat3 Q = checks::random_rotation(0, pi);
     const Mat3 J = Q * Vec3(A, B, C).asDiagonal() * Q.transpose();
     return 0.5 * (J + J.transpose());
 }
@@ -138,7 +129,7 @@ TEST_CASE("euler_poisson_rhs: equals the lab-frame torque of gravity brought int
         const Mat3 J = random_inertia();
         const double f = checks::uniform(0.1, 5);
         const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
-        const rigid::BodyState s{checks::random_vector(3), random_rotation()};
+        const rigid::BodyState s{checks::random_vector(3), checks::random_rotation(0, pi)};
         const rigid::BodyState d = rigid::euler_poisson_rhs(top_of(J, f, k, z0), s);
         const rigid::BodyState ref = rhs_ref(J, f, k, z0, s);
         CHECK_MAT_NEAR(d.Omega, ref.Omega, 1e-12);
@@ -175,7 +166,7 @@ TEST_CASE("heavy_top_energy: is the kinetic energy plus f times the height of th
         const Mat3 J = random_inertia();
         const double f = checks::uniform(0.1, 5);
         const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
-        const rigid::BodyState s{checks::random_vector(3), random_rotation()};
+        const rigid::BodyState s{checks::random_vector(3), checks::random_rotation(0, pi)};
         const double kinetic = 0.5 * (J * s.Omega).dot(s.Omega), height = (s.R * z0).dot(k);
         CHECK_NEAR(rigid::heavy_top_energy(top_of(J, f, k, z0), s), kinetic + f * height, 1e-13);
     }
@@ -190,7 +181,7 @@ TEST_CASE("euler_poisson_jacobian: matches central differences of the right-hand
         const Mat3 J = random_inertia();
         const double f = checks::uniform(0.1, 3);
         const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
-        const rigid::BodyState s{checks::random_vector(2), random_rotation()};
+        const rigid::BodyState s{checks::random_vector(2), checks::random_rotation(0, pi)};
         const rigid::MatX D = rigid::euler_poisson_jacobian(top_of(J, f, k, z0), s);
         REQUIRE(D.rows() == 12);
         REQUIRE(D.cols() == 12);

@@ -1,7 +1,7 @@
 // Graders for Chapter 6, the Grioli lines (rigid/inertia.hpp). Each test name starts with the
 // exercise it grades; each cross-checks against an independent computation: a direct sum over
 // point masses, Eigen's SelfAdjointEigenSolver, a bisection on the eigen-solver's moments, a
-// binary128 evaluation (quad_reference.hpp), or the circular sections computed from their
+// binary128 evaluation (solutions/reference/), or the circular sections computed from their
 // definition.
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "checks.hpp"
-#include "quad_reference.hpp"
+#include "reference/inertia.hpp"
 #include "rigid/inertia.hpp"
 
 using rigid::BodyAtG;
@@ -33,8 +33,10 @@ using quadref::quad;
 
 namespace {
 
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-const double inf_ = std::numeric_limits<double>::infinity();
+using checks::inf_;
+using checks::message_of;
+using checks::nan_;
+
 const double eps = std::numeric_limits<double>::epsilon();
 
 // A random body: positive second moments S_A > S_B > S_C give A_g = S_B + S_C < B_g = S_A + S_C
@@ -45,38 +47,15 @@ BodyAtG random_body() {
     return {s[1] + s[0], s[2] + s[0], s[2] + s[1], checks::uniform(0.3, 3)};
 }
 
-double size_of(const BodyAtG& b) { return std::sqrt(b.C_g / b.mu); }
-
 Vec3 random_plane_direction() { return rigid::shift_direction(checks::uniform(-pi, pi)); }
 
-// The tensor at O, written here from (5.2) without the student's shifted_inertia.
-Mat3 tensor_at(const BodyAtG& b, double L, const Vec3& z) {
-    const double h = b.mu * L * L;
-    return Vec3(b.A_g, b.B_g, b.C_g).asDiagonal().toDenseMatrix() + h * (Mat3::Identity() - z * z.transpose());
-}
-
-// The moments by Eigen's eigen-solver, named as in [P, (5.3)]: B is the eigenvalue whose axis is
-// x_B, A <= C the other two; with their axes.
-struct EigenMoments {
-    double A, B, C;
-    Vec3 vA, vB, vC;
-};
-EigenMoments eigen_moments(const Mat3& I) {
-    Eigen::SelfAdjointEigenSolver<Mat3> es(I);
-    Eigen::Index iB;
-    es.eigenvectors().row(1).cwiseAbs().maxCoeff(&iB);
-    int others[2], n = 0;
-    for (int i = 0; i < 3; ++i)
-        if (i != iB) others[n++] = i;
-    const int iA = others[0], iC = others[1];  // eigenvalues come sorted
-    return {es.eigenvalues()(iA), es.eigenvalues()(iB), es.eigenvalues()(iC),
-            es.eigenvectors().col(iA), es.eigenvectors().col(iB), es.eigenvectors().col(iC)};
-}
+using inertia_reference::eigen_moments;
+using inertia_reference::EigenMoments;
+using inertia_reference::size_of;
+using inertia_reference::tensor_at;
 
 // The binary128 reference for a double z.
-quadref::Moments reference(const BodyAtG& b, double L, const Vec3& z) {
-    return quadref::moments(b.A_g, b.B_g, b.C_g, b.mu, L, z.x(), z.z());
-}
+quadref::Moments reference(const BodyAtG& b, double L, const Vec3& z) { return inertia_reference::quad_moments(b, L, z); }
 
 // A point-mass body with its centre of mass at the origin.
 std::vector<rigid::PointMass> random_point_body(int n) {
@@ -108,18 +87,6 @@ Mat3 component_sums(const std::vector<rigid::PointMass>& pts, const Vec3& o) {
     I(2, 0) = I(0, 2);
     I(2, 1) = I(1, 2);
     return I;
-}
-
-template <class F>
-std::string message_of(F&& f) {
-    try {
-        f();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    } catch (...) {
-        return "(another exception)";
-    }
-    return "(no exception)";
 }
 
 const BodyAtG body0{1.0, 2.0, 2.5, 1.3};
@@ -373,15 +340,9 @@ TEST_CASE("critical_h: is where a bisection on the eigen-solver finds B = C") {
         const double c2 = critical_cos2_ref(b) * checks::uniform(0, 0.95);
         const Vec3 z(std::sqrt(c2), 0, (n % 2 ? -1 : 1) * std::sqrt(1 - c2));
         // Bisection on g(h) = C - B from the eigen-solver: positive at h = 0, negative far out.
-        auto g = [&](double h) {
-            const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-            return e.C - e.B;
-        };
-        double lo = 0, hi = b.C_g;
-        while (g(hi) > 0) hi *= 2;
-        for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+        const auto x = inertia_reference::crossing_by_bisection(b, z);
         CAPTURE(c2);
-        CHECK_NEAR(rigid::critical_h(b, z), 0.5 * (lo + hi), 1e-9 * hi);
+        CHECK_NEAR(rigid::critical_h(b, z), x.h(), 1e-9 * x.hi);
     }
     // At and above the critical angle the line never meets the hyperbola.
     CHECK(rigid::critical_h(body0, rigid::shift_direction(0.0)) == inf_);
@@ -414,14 +375,7 @@ TEST_CASE("hyperbola_lhs: is 1 where B = C and 0 on the asymptotes") {
         const double c2 = critical_cos2_ref(b) * checks::uniform(0, 0.95);
         const Vec3 z(std::sqrt(c2), 0, std::sqrt(1 - c2));
         // The crossing from the eigen-solver (bisection), then the point L z on the plane.
-        auto g = [&](double h) {
-            const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-            return e.C - e.B;
-        };
-        double lo = 0, hi = b.C_g;
-        while (g(hi) > 0) hi *= 2;
-        for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-        const double L = std::sqrt(0.5 * (lo + hi) / b.mu);
+        const double L = std::sqrt(inertia_reference::crossing_by_bisection(b, z).h() / b.mu);
         CHECK_NEAR(rigid::hyperbola_lhs(b, L * z.x(), L * z.z()), 1.0, 1e-8);
         // On a line at the critical angle, (5.15), at any distance.
         const double k = std::sqrt((b.C_g - b.B_g) / (b.B_g - b.A_g));

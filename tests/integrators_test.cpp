@@ -13,7 +13,7 @@ using rigid::VecX;
 
 namespace {
 
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
+using checks::nan_;
 
 // The harmonic oscillator y'' = -y as a first-order system; exact y = (cos t, -sin t).
 VecX oscillator(double, const VecX& y) { return VecX{{y(1), -y(0)}}; }

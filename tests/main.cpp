@@ -8,6 +8,8 @@
 #include <random>
 #include <sstream>
 
+#include "listener.hpp"
+
 namespace checks {
 
 std::mt19937_64& rng() {
@@ -24,20 +26,10 @@ extern "C" const char* workbook_replay_verdict() __attribute__((weak));
 namespace {
 
 // Every test case starts from the same seed, whatever ran before it.
-struct Reseed : doctest::IReporter {
+struct Reseed : checks::Listener {
     explicit Reseed(const doctest::ContextOptions&) {}
-    void report_query(const doctest::QueryData&) override {}
-    void test_run_start() override {}
-    void test_run_end(const doctest::TestRunStats&) override {}
     void test_case_start(const doctest::TestCaseData&) override { checks::rng().seed(20261121); }
     void test_case_reenter(const doctest::TestCaseData&) override { checks::rng().seed(20261121); }
-    void test_case_end(const doctest::CurrentTestCaseStats&) override {}
-    void test_case_exception(const doctest::TestCaseException&) override {}
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
-    void log_assert(const doctest::AssertData&) override {}
-    void log_message(const doctest::MessageData&) override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 
 REGISTER_LISTENER("reseed", 1, Reseed);
@@ -52,7 +44,7 @@ REGISTER_LISTENER("reseed", 1, Reseed);
 //   {"event": "exception", "text": ..., "crash": bool}      what escaped the test case
 //   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "replay": ...}
 //   {"event": "run", "cases": n, "failed": n}               the run is over
-struct Verdicts : doctest::IReporter {
+struct Verdicts : checks::Listener {
     const doctest::ContextOptions& opt;
     const doctest::TestCaseData* current = nullptr;
     explicit Verdicts(const doctest::ContextOptions& o) : opt(o) {}
@@ -78,7 +70,6 @@ struct Verdicts : doctest::IReporter {
         for (unsigned i = 0; i < q.num_data; ++i)
             emit({{"test", q.data[i]->m_name}, {"file", text(q.data[i]->m_file)}, {"line", q.data[i]->m_line}});
     }
-    void test_run_start() override {}
     void test_run_end(const doctest::TestRunStats& st) override {
         emit({{"event", "run"}, {"cases", st.numTestCasesPassingFilters}, {"failed", st.numTestCasesFailed}});
     }
@@ -86,7 +77,6 @@ struct Verdicts : doctest::IReporter {
         current = &t;
         emit({{"event", "start"}, {"name", t.m_name}, {"file", text(t.m_file)}, {"line", t.m_line}});
     }
-    void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats& st) override {
         nlohmann::json j{{"event", "end"},
                          {"name", current ? current->m_name : ""},
@@ -103,8 +93,6 @@ struct Verdicts : doctest::IReporter {
     void test_case_exception(const doctest::TestCaseException& e) override {
         emit({{"event", "exception"}, {"text", text(e.error_string)}, {"crash", e.is_crash}});
     }
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
     void log_assert(const doctest::AssertData& a) override {
         if (!a.m_failed) return;
         nlohmann::json j{{"event", "assert"},
@@ -122,7 +110,6 @@ struct Verdicts : doctest::IReporter {
         emit({{"event", "message"}, {"file", m.m_file}, {"line", m.m_line}, {"text", text(m.m_string)},
               {"severity", doctest::failureString(m.m_severity)}, {"info", contexts()}});
     }
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 
 REGISTER_REPORTER("workbook", 1, Verdicts);

@@ -18,16 +18,11 @@ using rigid::Vec3;
 
 namespace {
 
-// exp(phi hat(axis)), independent of the student's code.
-Mat3 rot(const Vec3& axis, double phi) { return Eigen::AngleAxisd(phi, axis.normalized()).toRotationMatrix(); }
-Mat3 rot(const Vec3& w) { return w.norm() == 0 ? Mat3::Identity() : rot(w, w.norm()); }
-Mat3 skew(const Vec3& w) {
-    Mat3 W;
-    W << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-    return W;
-}
+using checks::Rot;
+using checks::skew;
 
-Mat3 random_rotation() { return rot(checks::random_unit(), checks::uniform(0.1, 3.0)); }
+// exp(hat(w)), independent of the student's code.
+Mat3 rot(const Vec3& w) { return w.norm() == 0 ? Mat3::Identity() : Rot(w, w.norm()); }
 
 // The Grioli precession of the body diag(A, B, C), A < B < C, written out from [P, (4.5)-(4.11)]
 // (the inertia frame at t = 0; z(0) = a): R(t) = R^b(alpha t) R^a(alpha t), b = e2.
@@ -36,8 +31,8 @@ struct Grioli {
     Vec3 a;
     double alpha;
     BodyState at(double t) const {
-        const Mat3 Ra = rot(a, alpha * t);
-        return {alpha * (a + Ra.transpose() * Vec3::UnitY()), rot(Vec3::UnitY(), alpha * t) * Ra};
+        const Mat3 Ra = Rot(a, alpha * t);
+        return {alpha * (a + Ra.transpose() * Vec3::UnitY()), Rot(Vec3::UnitY(), alpha * t) * Ra};
     }
     double period() const { return 2 * std::acos(-1.0) / alpha; }
 };
@@ -71,7 +66,7 @@ HeavyTop random_top() {
             checks::random_unit()};
 }
 
-BodyState random_state() { return {checks::random_vector(1.5), random_rotation()}; }
+BodyState random_state() { return {checks::random_vector(1.5), checks::random_rotation(0.1, 3.0)}; }
 
 }  // namespace
 
@@ -82,7 +77,7 @@ TEST_CASE("expm1_so3: is the rotation about w by |w| minus the identity") {
         const Vec3 u = checks::random_unit();
         const double phi = checks::uniform(1e-3, std::acos(-1.0));
         CAPTURE(phi);
-        CHECK_MAT_NEAR(rigid::expm1_so3(phi * u), rot(u, phi) - Mat3::Identity(), 2e-14);
+        CHECK_MAT_NEAR(rigid::expm1_so3(phi * u), Rot(u, phi) - Mat3::Identity(), 2e-14);
     }
 }
 
@@ -191,7 +186,7 @@ TEST_CASE("rkmk4_step: one plus E is a rotation whatever the step") {
 TEST_CASE("rkmk4_step: is exact for a spherical body without torque") {
     // Omega stays constant and R(h) = R(0) exp(h hat(Omega)).
     const HeavyTop top{2.5 * Mat3::Identity(), 0.0, Vec3::UnitZ(), Vec3::UnitX()};
-    const BodyState s{Vec3(0.4, -1.1, 0.7), random_rotation()};
+    const BodyState s{Vec3(0.4, -1.1, 0.7), checks::random_rotation(0.1, 3.0)};
     const double h = 0.7;
     const Increment d = rigid::rkmk4_step(top, s, h);
     CHECK_MAT_NEAR(d.dOmega, Vec3::Zero(), 1e-14);
@@ -211,7 +206,7 @@ TEST_CASE("rkmk4_step: converges with order 4 to the Grioli precession") {
 TEST_CASE("torque_kick: changes Omega by h f J^-1 (R^T k) x z(0) and nothing else") {
     for (int i = 0; i < 20; ++i) {
         HeavyTop top = random_top();
-        const Mat3 Q = random_rotation();
+        const Mat3 Q = checks::random_rotation(0.1, 3.0);
         top.J = Q * top.J * Q.transpose();  // the kick works for any inertia tensor
         const BodyState s = random_state();
         const double h = checks::uniform(-0.5, 0.5);
@@ -233,8 +228,8 @@ TEST_CASE("free_rotation: is the exact flow of the kinetic energy about one axis
         const Vec3 e = Vec3::Unit(axis);
         const double phi = h * s.Omega(axis);
         const Increment d = rigid::free_rotation(top, s, axis, h);
-        CHECK_MAT_NEAR(s.R + s.R * d.E, s.R * rot(e, phi), 2e-15);
-        CHECK_MAT_NEAR(s.Omega + d.dOmega, top.J.inverse() * rot(e, -phi) * top.J * s.Omega, 1e-14);
+        CHECK_MAT_NEAR(s.R + s.R * d.E, s.R * Rot(e, phi), 2e-15);
+        CHECK_MAT_NEAR(s.Omega + d.dOmega, top.J.inverse() * Rot(e, -phi) * top.J * s.Omega, 1e-14);
     }
 }
 
@@ -266,8 +261,8 @@ TEST_CASE("strang_step: is the flows of V T1 T2 T3 T2 T1 V in that order") {
     const auto kick = [&](double t) { x.Omega += t * top.f * ((x.R.transpose() * top.k).cross(top.z0)).cwiseQuotient(I); };
     const auto turn = [&](int i, double t) {
         const double phi = t * x.Omega(i);
-        x.R = x.R * rot(Vec3::Unit(i), phi);
-        x.Omega = (rot(Vec3::Unit(i), -phi) * I.cwiseProduct(x.Omega)).cwiseQuotient(I);
+        x.R = x.R * Rot(Vec3::Unit(i), phi);
+        x.Omega = (Rot(Vec3::Unit(i), -phi) * I.cwiseProduct(x.Omega)).cwiseQuotient(I);
     };
     kick(h / 2), turn(0, h / 2), turn(1, h / 2), turn(2, h), turn(1, h / 2), turn(0, h / 2), kick(h / 2);
     const BodyState n = rigid::apply(s, rigid::strang_step(top, s, h));
@@ -311,19 +306,19 @@ TEST_CASE("triple_jump: takes the substeps g1 h then g2 h then g1 h each from th
     const rigid::IncrementStepper step = [&](const BodyState& s, double h) {
         hs.push_back(h);
         from.push_back(s);
-        return Increment{h * Vec3(1, 2, 3), rot(Vec3::UnitZ(), h) - Mat3::Identity()};
+        return Increment{h * Vec3(1, 2, 3), Rot(Vec3::UnitZ(), h) - Mat3::Identity()};
     };
-    const BodyState s{Vec3(0.1, 0.2, 0.3), random_rotation()};
+    const BodyState s{Vec3(0.1, 0.2, 0.3), checks::random_rotation(0.1, 3.0)};
     const double h = 0.4;
     const Increment d = rigid::triple_jump(step, s, h);
     REQUIRE(hs.size() == 3);
     CHECK_NEAR(hs[0], g1 * h, 1e-15);
     CHECK_NEAR(hs[1], g2 * h, 1e-15);
     CHECK_NEAR(hs[2], g1 * h, 1e-15);
-    CHECK_MAT_NEAR(from[1].R, s.R * rot(Vec3::UnitZ(), g1 * h), 1e-14);
+    CHECK_MAT_NEAR(from[1].R, s.R * Rot(Vec3::UnitZ(), g1 * h), 1e-14);
     CHECK_MAT_NEAR(from[2].Omega, s.Omega + (g1 + g2) * h * Vec3(1, 2, 3), 1e-14);
     CHECK_MAT_NEAR(d.dOmega, h * Vec3(1, 2, 3), 1e-14);
-    CHECK_MAT_NEAR(Mat3::Identity() + d.E, rot(Vec3::UnitZ(), h), 1e-14);
+    CHECK_MAT_NEAR(Mat3::Identity() + d.E, Rot(Vec3::UnitZ(), h), 1e-14);
 }
 
 TEST_CASE("triple_jump: makes the Strang splitting fourth order") {

@@ -22,8 +22,8 @@ using std::numbers::pi;
 
 namespace {
 
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-const double inf_ = std::numeric_limits<double>::infinity();
+using checks::inf_;
+using checks::nan_;
 
 const rigid::OdeSettings tight{.method = "rk8pd", .rel_tol = 1e-13, .abs_tol = 1e-13};
 

@@ -13,6 +13,9 @@ using std::numbers::pi;
 
 namespace {
 
+using checks::inf_;
+using checks::nan_;
+
 // The Levi-Civita symbol, written out: the independent reference for hat and vee.
 double eps(int i, int j, int k) { return 0.5 * (i - j) * (j - k) * (k - i); }
 
@@ -28,9 +31,6 @@ Mat3 skew_ref(const Vec3& w) {
 }
 
 Mat3 random_rotation() { return angle_axis(checks::random_unit(), checks::uniform(0, pi)); }
-
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
-const double inf_ = std::numeric_limits<double>::infinity();
 
 }  // namespace
 

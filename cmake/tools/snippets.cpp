@@ -69,7 +69,7 @@ int snippets_and_values(const fs::path& root, Mode mode, const prose::Runs* runs
         if (it != smoke_reports.end()) return it->second.get();
         std::unique_ptr<prose::Json> j;
         const fs::path p = *smoke / (scene + ".json");
-        if (fs::exists(p)) j = std::make_unique<prose::Json>(prose::JsonParser(prose::read_text(p)).parse());
+        if (fs::exists(p)) j = std::make_unique<prose::Json>(prose::read_json(p));
         return (smoke_reports[scene] = std::move(j)).get();
     };
 
@@ -366,11 +366,12 @@ int check_names(const fs::path& root) {
                 ++names;
                 bool found = false;
                 // Relative to the root, the prose's folder, or a top-level folder (`kit/` in a
-                // table row about chapters/; `rigid/rotation.hpp` as it is #included).
+                // table row about chapters/; `rigid/rotation.hpp` and `rigid/ode.hpp` as they are #included).
                 std::vector<fs::path> bases{root, dir};
                 for (const auto& e : fs::directory_iterator(root))
                     if (e.is_directory()) bases.push_back(e.path());
                 bases.push_back(root / "chapters" / "kit");
+                bases.push_back(root / "exercises" / "provided");
                 for (const auto& base : bases) found = found || fs::exists(base / t);
                 if (!found) problems.push_back(where + ": `" + t + "` does not exist");
             }

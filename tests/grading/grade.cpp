@@ -241,6 +241,143 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
     return hex(hash(all.str()));
 }
 
+namespace {
+
+// Grading one submission: its folders and the facts every step needs.
+struct Grading {
+    const Setup& setup;
+    const Options& options;
+    const Selection& selection;
+    std::string work_dir, log_dir;
+
+    // Messages name the student's file as exercises/<topic>.cpp and the workbook's files by
+    // their paths in the workbook, whatever folders the run uses.
+    std::string relative(const std::string& text) const {
+        return relative_to_root(setup, replace_all(text, work_dir + "/", ""));
+    }
+    bool selected(const Exercise& exercise) const {
+        return selection.exercise.empty() || exercise.name == selection.exercise;
+    }
+};
+
+// A topic's test binary, built from the student's file: compiled with the build's flags, checked
+// for its own use of the test framework, linked with the graders and the recorder. Returns an
+// empty verdict, or "build error" with the problem.
+struct Built {
+    std::string verdict, problem, binary;
+};
+
+Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& file) {
+    const std::string& work_dir = g.work_dir;
+    const std::string source = work_dir + "/exercises/" + topic.name + ".cpp";
+    const std::string object = work_dir + "/obj/" + topic.name + ".o";
+    const std::string log = work_dir + "/logs/" + topic.name + ".txt";
+    Built b{"", "", work_dir + "/bin/grade_" + topic.name};
+    write_file(source, file.content);
+    std::vector<std::string> compile;
+    for (const auto& w : topic.compile) compile.push_back(w == "@SOURCE@" ? source : w == "@OBJECT@" ? object : w);
+    Outcome o = run_limited(compile, work_dir, log, g.options.build_limits);
+    std::string text = g.relative(read_file(log));
+    std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
+    if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
+        b.verdict = "build error", b.problem = build_problem(o, "compiler", text, g.options.build_limits);
+    } else if (const std::string why = test_framework_use(g.setup, object, work_dir, g.options); !why.empty()) {
+        b.verdict = "build error", b.problem = "exercises/" + topic.name + ".cpp " + why;
+        build_log += "$ nm exercises/" + topic.name + ".o\n" + b.problem + "\n";
+    } else {
+        std::vector<std::string> link = {g.setup.compiler};
+        link.insert(link.end(), g.setup.link_flags.begin(), g.setup.link_flags.end());
+        link.insert(link.end(), topic.objects.begin(), topic.objects.end());
+        link.push_back(object);
+        link.insert(link.end(), topic.recorder.begin(), topic.recorder.end());
+        link.insert(link.end(), topic.link.begin(), topic.link.end());
+        link.insert(link.end(), topic.wraps.begin(), topic.wraps.end());
+        link.push_back("-o");
+        link.push_back(b.binary);
+        o = run_limited(link, work_dir, log, g.options.build_limits);
+        text = g.relative(read_file(log));
+        build_log += "$ link with the graders of " + topic.name + "\n" + first_lines(text, 200000);
+        if (!o.started || o.timed_out || o.signal || o.exit_code != 0)
+            b.verdict = "build error", b.problem = build_problem(o, "linker", text, g.options.build_limits);
+    }
+    if (!g.log_dir.empty()) write_file(g.log_dir + "/" + topic.name + ".build.txt", build_log);
+    return b;
+}
+
+// One test, in its own process in the sandbox: it records what the student's functions
+// returned. Then the trusted replay binary runs the same test on that record and says whether
+// it passes.
+TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& file, const std::string& binary,
+                    const Exercise& exercise, std::size_t k) {
+    const std::string& work_dir = g.work_dir;
+    const std::string run_dir = work_dir + "/run";
+    const std::string output_path = work_dir + "/logs/output.txt";
+    const std::string record_path = work_dir + "/logs/record.bin";
+    const std::string file_filter = "*/" + topic.test_file;
+    const Test& test = exercise.tests[k];
+    if (isolation() != Isolation::namespaces) {
+        remove_tree(run_dir);
+        make_dirs(run_dir);
+        if (isolation() == Isolation::user) (void)!chown(run_dir.c_str(), 65534, 65534);
+    }
+    std::string record, verdicts;
+    bool overflow = false;
+    Limits limits = g.options.test_limits;
+    limits.isolate = true;
+    const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
+                                   "--out=/dev/null", "--no-exitcode", "--no-version", "--no-colors"},
+                                  run_dir, output_path, limits, &record, 256u << 20, &overflow);
+    Outcome replayed;
+    if (t.started && !t.timed_out && !t.signal && !overflow) {
+        write_file(record_path, record);
+        Limits replay_limits = g.options.test_limits;
+        replay_limits.isolate = false;
+        replay_limits.memory_mb += 512;  // the record itself, up to 256 MiB
+        replay_limits.environment = {"WORKBOOK_RECORD=" + record_path};
+        replayed = run_limited({topic.replay, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
+                                "--out=/dev/fd/3", "--no-version", "--no-colors"},
+                               work_dir, work_dir + "/logs/replay.txt", replay_limits, &verdicts);
+    }
+    Run r = decide(g.setup, t, overflow, replayed, verdicts, test, g.options);
+    // An exercise whose body is still the stub's todo("<name>") is not started.
+    if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
+        r.not_started = true;
+        r.message = "not started: todo(\"" + exercise.name + "\") is still in place";
+    }
+    TestResult tr{topic.chapter, topic.name, exercise.name, test.name, r.verdict, 0,
+                  share(exercise.points, exercise.tests.size(), k), r.not_started, g.relative(r.message), ""};
+    if (tr.verdict == "pass") tr.score = tr.max_score;
+    std::string printed = read_file(output_path);
+    if (printed.size() > 500) printed = first_lines(printed, 500);
+    tr.output = printed;
+    return tr;
+}
+
+// Every test of a topic that cannot run (missing, refused, does not build) gets its verdict.
+void grade_unbuilt(const Grading& g, const Topic& topic, const std::string& verdict, const std::string& problem,
+                   SubmissionResult& result) {
+    result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
+    for (const auto& exercise : topic.exercises) {
+        if (!g.selected(exercise)) continue;
+        for (std::size_t k = 0; k < exercise.tests.size(); ++k)
+            result.tests.push_back({topic.chapter, topic.name, exercise.name, exercise.tests[k].name, verdict, 0,
+                                    share(exercise.points, exercise.tests.size(), k), false, problem, ""});
+    }
+}
+
+void grade_topic(const Grading& g, const Topic& topic, const SubmittedFile& file, SubmissionResult& result) {
+    if (file.state != "ok") return grade_unbuilt(g, topic, "missing", file.reason, result);
+    const Built b = build_topic(g, topic, file);
+    if (!b.verdict.empty()) return grade_unbuilt(g, topic, b.verdict, b.problem, result);
+    for (const auto& exercise : topic.exercises) {
+        if (!g.selected(exercise)) continue;
+        for (std::size_t k = 0; k < exercise.tests.size(); ++k)
+            result.tests.push_back(run_test(g, topic, file, b.binary, exercise, k));
+    }
+}
+
+}  // namespace
+
 SubmissionResult grade_submission(const Setup& setup, const Options& options, const std::string& student,
                                   const std::vector<SubmittedFile>& files, const Selection& selection,
                                   const std::string& work_dir, const std::string& log_dir) {
@@ -250,111 +387,11 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
     remove_tree(work_dir);
     for (const char* sub : {"exercises", "obj", "bin", "run", "logs"}) make_dirs(work_dir + "/" + sub);
     if (!log_dir.empty()) make_dirs(log_dir);
-    // Messages name the student's file as exercises/<topic>.cpp and the workbook's files by
-    // their paths in the workbook, whatever folders the run uses.
-    auto relative = [&](const std::string& text) { return relative_to_root(setup, replace_all(text, work_dir + "/", "")); };
-
+    const Grading g{setup, options, selection, work_dir, log_dir};
     for (std::size_t k = 0; k < setup.topics.size(); ++k) {
         const Topic& topic = setup.topics[k];
-        const SubmittedFile& file = files[k];
         if (!selection.topics.empty() && !selection.topics.count(topic.name)) continue;
-        std::string problem, verdict;
-        if (file.state != "ok") {
-            verdict = "missing", problem = file.reason;
-        } else {
-            const std::string source = work_dir + "/exercises/" + topic.name + ".cpp";
-            const std::string object = work_dir + "/obj/" + topic.name + ".o";
-            const std::string binary = work_dir + "/bin/grade_" + topic.name;
-            const std::string log = work_dir + "/logs/" + topic.name + ".txt";
-            write_file(source, file.content);
-            std::vector<std::string> compile;
-            for (const auto& w : topic.compile) compile.push_back(w == "@SOURCE@" ? source : w == "@OBJECT@" ? object : w);
-            Outcome o = run_limited(compile, work_dir, log, options.build_limits);
-            std::string text = relative(read_file(log));
-            std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
-            if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
-                verdict = "build error", problem = build_problem(o, "compiler", text, options.build_limits);
-            } else if (const std::string why = test_framework_use(setup, object, work_dir, options); !why.empty()) {
-                verdict = "build error", problem = "exercises/" + topic.name + ".cpp " + why;
-                build_log += "$ nm exercises/" + topic.name + ".o\n" + problem + "\n";
-            } else {
-                std::vector<std::string> link = {setup.compiler};
-                link.insert(link.end(), setup.link_flags.begin(), setup.link_flags.end());
-                link.insert(link.end(), topic.objects.begin(), topic.objects.end());
-                link.push_back(object);
-                link.insert(link.end(), topic.recorder.begin(), topic.recorder.end());
-                link.insert(link.end(), topic.link.begin(), topic.link.end());
-                link.insert(link.end(), topic.wraps.begin(), topic.wraps.end());
-                link.push_back("-o");
-                link.push_back(binary);
-                o = run_limited(link, work_dir, log, options.build_limits);
-                text = relative(read_file(log));
-                build_log += "$ link with the graders of " + topic.name + "\n" + first_lines(text, 200000);
-                if (!o.started || o.timed_out || o.signal || o.exit_code != 0)
-                    verdict = "build error", problem = build_problem(o, "linker", text, options.build_limits);
-            }
-            if (!log_dir.empty()) write_file(log_dir + "/" + topic.name + ".build.txt", build_log);
-            if (verdict.empty()) {
-                // Every test in its own process, in the sandbox: it records what the student's
-                // functions returned. Then the trusted replay binary runs the same test on that
-                // record and says whether it passes.
-                const std::string run_dir = work_dir + "/run";
-                const std::string output_path = work_dir + "/logs/output.txt";
-                const std::string record_path = work_dir + "/logs/record.bin";
-                const std::string replay_output = work_dir + "/logs/replay.txt";
-                const std::string file_filter = "*/" + topic.test_file;
-                Limits replay_limits = options.test_limits;
-                replay_limits.isolate = false;
-                replay_limits.memory_mb += 512;  // the record itself, up to 256 MiB
-                replay_limits.environment = {"WORKBOOK_RECORD=" + record_path};
-                for (const auto& exercise : topic.exercises) {
-                    if (!selection.exercise.empty() && exercise.name != selection.exercise) continue;
-                    for (std::size_t k = 0; k < exercise.tests.size(); ++k) {
-                        const Test& test = exercise.tests[k];
-                        if (isolation() != Isolation::namespaces) {
-                            remove_tree(run_dir);
-                            make_dirs(run_dir);
-                            if (isolation() == Isolation::user) (void)!chown(run_dir.c_str(), 65534, 65534);
-                        }
-                        std::string record, verdicts;
-                        bool overflow = false;
-                        Limits limits = options.test_limits;
-                        limits.isolate = true;
-                        const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
-                                                       "--out=/dev/null", "--no-exitcode", "--no-version", "--no-colors"},
-                                                      run_dir, output_path, limits, &record, 256u << 20, &overflow);
-                        Outcome replayed;
-                        if (t.started && !t.timed_out && !t.signal && !overflow) {
-                            write_file(record_path, record);
-                            replayed = run_limited({topic.replay, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
-                                                    "--out=/dev/fd/3", "--no-version", "--no-colors"},
-                                                   work_dir, replay_output, replay_limits, &verdicts);
-                        }
-                        Run r = decide(setup, t, overflow, replayed, verdicts, test, options);
-                        // An exercise whose body is still the stub's todo("<name>") is not started.
-                        if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
-                            r.not_started = true;
-                            r.message = "not started: todo(\"" + exercise.name + "\") is still in place";
-                        }
-                        TestResult tr{topic.chapter, topic.name, exercise.name, test.name, r.verdict, 0,
-                                      share(exercise.points, exercise.tests.size(), k), r.not_started, relative(r.message), ""};
-                        if (tr.verdict == "pass") tr.score = tr.max_score;
-                        std::string printed = read_file(output_path);
-                        if (printed.size() > 500) printed = first_lines(printed, 500);
-                        tr.output = printed;
-                        result.tests.push_back(tr);
-                    }
-                }
-                continue;
-            }
-        }
-        result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
-        for (const auto& exercise : topic.exercises) {
-            if (!selection.exercise.empty() && exercise.name != selection.exercise) continue;
-            for (std::size_t k = 0; k < exercise.tests.size(); ++k)
-                result.tests.push_back({topic.chapter, topic.name, exercise.name, exercise.tests[k].name, verdict, 0,
-                                        share(exercise.points, exercise.tests.size(), k), false, problem, ""});
-        }
+        grade_topic(g, topic, files[k], result);
     }
     for (const auto& t : result.tests) result.score += t.score, result.max_score += t.max_score;
     if (!options.keep_work) remove_tree(work_dir);
@@ -371,37 +408,42 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
     std::string summary = std::to_string(passed) + " of " + std::to_string(r.tests.size()) + " tests pass; score " +
                           format_number(r.score) + " of " + format_number(r.max_score) + ".";
     for (const auto& n : r.notes) summary += "\n" + n;
-    std::string out = "{\n";
-    out += "  \"score\": " + format_number(r.score) + ",\n";
-    out += "  \"output\": " + json_string(summary) + ",\n";
-    out += "  \"visibility\": \"visible\",\n";
-    out += "  \"stdout_visibility\": \"hidden\",\n";
-    out += "  \"extra_data\": {\"student\": " + json_string(r.student) + ", \"max_score\": " + format_number(r.max_score) +
-           ", \"harness\": " + json_string(harness_version) + ", \"fingerprint\": " + json_string(r.fingerprint) + "},\n";
-    out += "  \"tests\": [";
+    nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     std::string chapter;
     int in_chapter = 0;
-    for (std::size_t k = 0; k < r.tests.size(); ++k) {
-        const TestResult& t = r.tests[k];
+    for (const TestResult& t : r.tests) {
         const Chapter* c = find_chapter(setup, t.chapter);
         in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
         chapter = t.chapter;
         std::string text = t.verdict == "pass" ? "pass" : t.verdict + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
-        out += k ? ",\n" : "\n";
-        out += "    {\"name\": " + json_string(t.name) + ", \"score\": " + format_number(t.score) +
-               ", \"max_score\": " + format_number(t.max_score) + ", \"status\": \"" +
-               (t.verdict == "pass" ? "passed" : "failed") + "\",\n";
-        out += "     \"number\": " + json_string((c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)) +
-               ", \"tags\": [" + json_string(t.chapter) + ", " + json_string(t.topic) + ", " + json_string(t.exercise) +
-               "], \"visibility\": \"visible\",\n";
-        out += "     \"output\": " + json_string(text) + ",\n";
-        out += "     \"extra_data\": {\"verdict\": " + json_string(t.verdict) + ", \"chapter\": " + json_string(t.chapter) +
-               ", \"topic\": " + json_string(t.topic) + ", \"exercise\": " + json_string(t.exercise) +
-               ", \"not_started\": " + (t.not_started ? "true" : "false") + "}}";
+        tests.push_back({{"name", t.name},
+                         {"score", json_number(t.score)},
+                         {"max_score", json_number(t.max_score)},
+                         {"status", t.verdict == "pass" ? "passed" : "failed"},
+                         {"number", (c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)},
+                         {"tags", {t.chapter, t.topic, t.exercise}},
+                         {"visibility", "visible"},
+                         {"output", text},
+                         {"extra_data",
+                          {{"verdict", t.verdict},
+                           {"chapter", t.chapter},
+                           {"topic", t.topic},
+                           {"exercise", t.exercise},
+                           {"not_started", t.not_started}}}});
     }
-    out += "\n  ]\n}\n";
-    return out;
+    const nlohmann::ordered_json out = {
+        {"score", json_number(r.score)},
+        {"output", summary},
+        {"visibility", "visible"},
+        {"stdout_visibility", "hidden"},
+        {"extra_data",
+         {{"student", r.student},
+          {"max_score", json_number(r.max_score)},
+          {"harness", harness_version},
+          {"fingerprint", r.fingerprint}}},
+        {"tests", tests}};
+    return json_text(out);
 }
 
 namespace {

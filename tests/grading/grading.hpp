@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace grading {
 
 inline constexpr const char* harness_version = "workbook_grade 1";
@@ -30,7 +32,9 @@ std::string trim(const std::string& s);
 bool starts_with(const std::string& s, const std::string& prefix);
 bool ends_with(const std::string& s, const std::string& suffix);
 std::string replace_all(std::string s, const std::string& from, const std::string& to);
-std::string json_string(const std::string& s);  // quoted and escaped; invalid UTF-8 becomes U+FFFD
+// JSON through nlohmann-json: indented, UTF-8 as is (invalid UTF-8 becomes U+FFFD), a final newline.
+std::string json_text(const nlohmann::ordered_json& j);
+double json_number(double x);  // rounded to 4 decimals, as format_number shows it
 std::string format_number(double x);            // at most 4 decimals, no trailing zeros
 std::string first_lines(const std::string& s, std::size_t max_chars);
 std::uint64_t hash(const std::string& data, std::uint64_t seed = 0xcbf29ce484222325ULL);

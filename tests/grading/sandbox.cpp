@@ -138,152 +138,148 @@ std::string configure_sandbox() {
            std::string(geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
 }
 
-Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits, std::string* report_text,
-                    std::size_t report_limit, bool* report_overflow) {
-    Outcome outcome;
-    if (report_overflow) *report_overflow = false;
-    const bool namespaces = limits.isolate && mode == Isolation::namespaces;
-    const bool as_nobody = limits.isolate && mode != Isolation::limits_only && geteuid() == 0;
-    // Everything the child needs is prepared before fork.
-    std::vector<std::string> command;
-    int program = -1;  // the test binary, copied into the sandbox by bubblewrap from fd 4
-    if (namespaces) {
-        const std::string name = argv[0].substr(argv[0].rfind('/') + 1);
-        command = bwrap_arguments(name, std::max<long>(limits.output_bytes * 4, 8L << 20));
-        command.push_back("/run/test/" + name);
-        command.insert(command.end(), argv.begin() + 1, argv.end());
-    } else {
-        command = argv;
-    }
-    // The binary is opened here, before the child gives up root: neither bubblewrap nor fexecve
-    // then needs a path that the user nobody could follow.
-    if (namespaces || as_nobody) {
-        program = open(argv[0].c_str(), O_RDONLY | O_CLOEXEC);
-        if (program < 0) {
-            outcome.error = "cannot open " + argv[0] + ": " + std::strerror(errno);
-            return outcome;
-        }
-    }
-    std::vector<char*> args;
-    for (const auto& a : command) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    const char* path = std::getenv("PATH");
-    const std::string home = namespaces ? "/work" : cwd;
-    std::vector<std::string> environment = {
-        std::string("PATH=") + (path ? path : "/usr/local/bin:/usr/bin:/bin"),
-        "LC_ALL=C", "LANG=C", "HOME=" + home, "TMPDIR=" + home};
-    environment.insert(environment.end(), limits.environment.begin(), limits.environment.end());
-    std::vector<char*> env;
-    for (auto& e : environment) env.push_back(e.data());
-    env.push_back(nullptr);
-    const rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
-    const rlim_t memory = static_cast<rlim_t>(limits.memory_mb) << 20;
-    const rlim_t output = static_cast<rlim_t>(limits.output_bytes);
+namespace {
 
-    auto close_program = [&]() {
+// What the child needs, all prepared before fork (after it, only async-signal-safe calls).
+struct Launch {
+    bool namespaces = false, as_nobody = false;
+    std::vector<std::string> command, environment;
+    std::vector<char*> args, env;
+    int program = -1;  // the test binary, copied into the sandbox by bubblewrap from fd 4
+    rlim_t cpu = 0, memory = 0, output = 0;
+    ~Launch() {
         if (program >= 0) close(program);
-    };
-    int report[2];  // the child reports a failed exec here; closes on a successful one
-    if (pipe2(report, O_CLOEXEC) != 0) {
-        outcome.error = std::string("pipe: ") + std::strerror(errno);
-        close_program();
-        return outcome;
     }
-    int channel[2] = {-1, -1};  // the report pipe, fd 3 in the child
-    if (report_text) {
-        report_text->clear();
-        if (pipe2(channel, O_CLOEXEC) != 0) {
-            outcome.error = std::string("pipe: ") + std::strerror(errno);
-            close(report[0]);
-            close(report[1]);
-            close_program();
-            return outcome;
-        }
+};
+
+// The command (bubblewrap's, or the program's own), its environment and limits. The binary is
+// opened here, before the child gives up root: neither bubblewrap nor fexecve then needs a
+// path that the user nobody could follow. Returns an empty string or why it cannot start.
+std::string prepare_launch(const std::vector<std::string>& argv, const std::string& cwd, const Limits& limits,
+                           Launch& l) {
+    l.namespaces = limits.isolate && mode == Isolation::namespaces;
+    l.as_nobody = limits.isolate && mode != Isolation::limits_only && geteuid() == 0;
+    if (l.namespaces) {
+        const std::string name = argv[0].substr(argv[0].rfind('/') + 1);
+        l.command = bwrap_arguments(name, std::max<long>(limits.output_bytes * 4, 8L << 20));
+        l.command.push_back("/run/test/" + name);
+        l.command.insert(l.command.end(), argv.begin() + 1, argv.end());
+    } else {
+        l.command = argv;
     }
-    const pid_t parent = getpid();
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = fork();
-    if (pid < 0) {
-        outcome.error = std::string("fork: ") + std::strerror(errno);
-        close(report[0]);
-        close(report[1]);
-        if (report_text) close(channel[0]), close(channel[1]);
-        close_program();
-        return outcome;
+    if (l.namespaces || l.as_nobody) {
+        l.program = open(argv[0].c_str(), O_RDONLY | O_CLOEXEC);
+        if (l.program < 0) return "cannot open " + argv[0] + ": " + std::strerror(errno);
     }
-    if (pid == 0) {
-        setpgid(0, 0);
-        prctl(PR_SET_PDEATHSIG, SIGKILL);  // the harness dies: so does the test
-        if (getppid() != parent) _exit(127);
-        close(report[0]);
-        const int in = open("/dev/null", O_RDONLY);
-        const int out = open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (in < 0 || out < 0 || (!namespaces && chdir(cwd.c_str()) != 0)) {
-            const int e = errno;
-            (void)!write(report[1], &e, sizeof e);
-            _exit(127);
-        }
-        // Every descriptor the child keeps moves above fd 10 first, out of the way of 0 to 4.
-        const int exec_report = fcntl(report[1], F_DUPFD_CLOEXEC, 10);
-        const int report_end = report_text ? fcntl(channel[1], F_DUPFD_CLOEXEC, 10) : -1;
-        const int program_copy = program >= 0 ? fcntl(program, F_DUPFD_CLOEXEC, 10) : -1;
-        dup2(in, 0);
-        dup2(out, 1);
-        dup2(out, 2);
-        if (report_text) dup2(report_end, 3);  // without O_CLOEXEC: the program keeps it
-        if (namespaces) dup2(program_copy, 4);  // bubblewrap reads it, then closes it
-        const int first_closed = namespaces ? 5 : report_text ? 4 : 3;
-        for (int fd = first_closed; fd < 1024; ++fd)
-            if (fd != exec_report && !(fd == program_copy && !namespaces)) close(fd);
-        if (!report_text && namespaces) close(3);
-        report[1] = exec_report;
-        for (int s = 1; s < NSIG; ++s) signal(s, SIG_DFL);
-        sigset_t none;
-        sigemptyset(&none);
-        sigprocmask(SIG_SETMASK, &none, nullptr);
-        set_limit(RLIMIT_AS, memory, memory);
-        set_limit(RLIMIT_CPU, cpu, cpu + 1);
-        set_limit(RLIMIT_FSIZE, output, output);
-        set_limit(RLIMIT_CORE, 0, 0);
-        if (as_nobody && !drop_to_nobody()) {
-            const int e = errno;
-            (void)!write(report[1], &e, sizeof e);
-            _exit(127);
-        }
-        // In the namespaces, bubblewrap needs its own processes; the limit is set inside.
-        if (limits.forbid_processes && !namespaces) set_limit(RLIMIT_NPROC, 0, 0);
-        if (as_nobody && !namespaces) fexecve(program_copy, args.data(), env.data());
-        else execve(args[0], args.data(), env.data());
-        const int e = errno;
-        (void)!write(report[1], &e, sizeof e);
-        _exit(127);
+    for (const auto& a : l.command) l.args.push_back(const_cast<char*>(a.c_str()));
+    l.args.push_back(nullptr);
+    const char* path = std::getenv("PATH");
+    const std::string home = l.namespaces ? "/work" : cwd;
+    l.environment = {std::string("PATH=") + (path ? path : "/usr/local/bin:/usr/bin:/bin"), "LC_ALL=C", "LANG=C",
+                     "HOME=" + home, "TMPDIR=" + home};
+    l.environment.insert(l.environment.end(), limits.environment.begin(), limits.environment.end());
+    for (auto& e : l.environment) l.env.push_back(e.data());
+    l.env.push_back(nullptr);
+    l.cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
+    l.memory = static_cast<rlim_t>(limits.memory_mb) << 20;
+    l.output = static_cast<rlim_t>(limits.output_bytes);
+    return {};
+}
+
+// The pipes: `exec` reports a failed exec (it closes on a successful one); `channel`, with a
+// report, becomes fd 3 of the child.
+struct Pipes {
+    int exec[2] = {-1, -1};
+    int channel[2] = {-1, -1};
+};
+
+std::string open_pipes(bool with_report, Pipes& p) {
+    if (pipe2(p.exec, O_CLOEXEC) != 0) return std::string("pipe: ") + std::strerror(errno);
+    if (with_report && pipe2(p.channel, O_CLOEXEC) != 0) {
+        const std::string why = std::string("pipe: ") + std::strerror(errno);
+        close(p.exec[0]);
+        close(p.exec[1]);
+        return why;
     }
-    setpgid(pid, pid);
-    running_group = pid;
-    close(report[1]);
-    close_program();
-    if (report_text) {
-        close(channel[1]);
-        fcntl(channel[0], F_SETFL, O_NONBLOCK);
-    }
-    // What the program writes to fd 3, kept up to report_limit.
-    auto drain = [&]() {
-        if (!report_text) return;
+    return {};
+}
+
+[[noreturn]] void exec_failed(int fd) {
+    const int e = errno;
+    (void)!write(fd, &e, sizeof e);
+    _exit(127);
+}
+
+// Moves the descriptors the child keeps above fd 10, then into place: 0 from /dev/null, 1 and 2
+// into the output, 3 the report, 4 the binary for bubblewrap; closes every other one but the
+// binary (for fexecve). Returns the descriptor that reports a failed exec.
+int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int out, int& program_copy) {
+    const int exec_report = fcntl(p.exec[1], F_DUPFD_CLOEXEC, 10);
+    const int report_end = with_report ? fcntl(p.channel[1], F_DUPFD_CLOEXEC, 10) : -1;
+    program_copy = l.program >= 0 ? fcntl(l.program, F_DUPFD_CLOEXEC, 10) : -1;
+    dup2(in, 0);
+    dup2(out, 1);
+    dup2(out, 2);
+    if (with_report) dup2(report_end, 3);  // without O_CLOEXEC: the program keeps it
+    if (l.namespaces) dup2(program_copy, 4);  // bubblewrap reads it, then closes it
+    const int first_closed = l.namespaces ? 5 : with_report ? 4 : 3;
+    for (int fd = first_closed; fd < 1024; ++fd)
+        if (fd != exec_report && !(fd == program_copy && !l.namespaces)) close(fd);
+    if (!with_report && l.namespaces) close(3);
+    return exec_report;
+}
+
+// The child: its own process group, dies with the harness, descriptors in place, default
+// signals, the limits, then the program (as nobody when asked).
+[[noreturn]] void run_child(const Launch& l, Pipes& p, bool with_report, pid_t parent, const std::string& cwd,
+                            const std::string& output_path, const Limits& limits) {
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // the harness dies: so does the test
+    if (getppid() != parent) _exit(127);
+    close(p.exec[0]);
+    const int in = open("/dev/null", O_RDONLY);
+    const int out = open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0 || out < 0 || (!l.namespaces && chdir(cwd.c_str()) != 0)) exec_failed(p.exec[1]);
+    int program_copy = -1;
+    const int report = arrange_descriptors(l, p, with_report, in, out, program_copy);
+    for (int s = 1; s < NSIG; ++s) signal(s, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    set_limit(RLIMIT_AS, l.memory, l.memory);
+    set_limit(RLIMIT_CPU, l.cpu, l.cpu + 1);
+    set_limit(RLIMIT_FSIZE, l.output, l.output);
+    set_limit(RLIMIT_CORE, 0, 0);
+    if (l.as_nobody && !drop_to_nobody()) exec_failed(report);
+    // In the namespaces, bubblewrap needs its own processes; the limit is set inside.
+    if (limits.forbid_processes && !l.namespaces) set_limit(RLIMIT_NPROC, 0, 0);
+    if (l.as_nobody && !l.namespaces) fexecve(program_copy, l.args.data(), l.env.data());
+    else execve(l.args[0], l.args.data(), l.env.data());
+    exec_failed(report);
+}
+
+// What the program writes to fd 3, kept up to `limit` bytes.
+struct ReportReader {
+    int fd = -1;
+    std::string* text = nullptr;
+    std::size_t limit = 0;
+    bool* overflow = nullptr;
+    void drain() const {
+        if (!text) return;
         char buffer[65536];
         ssize_t n;
-        while ((n = read(channel[0], buffer, sizeof buffer)) > 0) {
-            if (report_text->size() + static_cast<std::size_t>(n) <= report_limit)
-                report_text->append(buffer, static_cast<std::size_t>(n));
-            else if (report_overflow)
-                *report_overflow = true;
+        while ((n = read(fd, buffer, sizeof buffer)) > 0) {
+            if (text->size() + static_cast<std::size_t>(n) <= limit) text->append(buffer, static_cast<std::size_t>(n));
+            else if (overflow) *overflow = true;
         }
-    };
-    int exec_errno = 0;
-    const bool exec_failed = read(report[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
-    close(report[0]);
+    }
+};
 
-    const auto deadline = start + std::chrono::duration<double>(limits.wall_seconds);
+// Waits for the child until `deadline` (then kills its group), reading its report meanwhile.
+// Returns its wait status; sets *timed_out.
+template <class Deadline>
+int wait_until(pid_t pid, Deadline deadline, const ReportReader& report,
+               bool* timed_out) {
     int status = 0;
     auto pause = std::chrono::microseconds(200);
     for (;;) {
@@ -291,38 +287,83 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
         if (done == pid) break;
         if (done < 0 && errno != EINTR) break;
         if (std::chrono::steady_clock::now() >= deadline) {
-            outcome.timed_out = true;
+            *timed_out = true;
             kill(-pid, SIGKILL);
             kill(pid, SIGKILL);
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
             break;
         }
-        if (report_text) {
-            pollfd p{channel[0], POLLIN, 0};
+        if (report.text) {
+            pollfd p{report.fd, POLLIN, 0};
             poll(&p, 1, static_cast<int>(std::max<long>(1, pause.count() / 1000)));
-            drain();
+            report.drain();
         } else {
             std::this_thread::sleep_for(pause);
         }
         pause = std::min(pause * 2, std::chrono::microseconds(10000));
     }
-    kill(-pid, SIGKILL);  // anything it left behind in its group
-    running_group = 0;
-    if (report_text) {
-        drain();
-        close(channel[0]);
-    }
-    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (exec_failed) {
-        outcome.error = "cannot run " + command[0] + ": " + std::strerror(exec_errno);
-        return outcome;
-    }
+    return status;
+}
+
+// How the program ended, from its wait status. bubblewrap reports a program killed by signal n
+// as the exit status 128 + n.
+void record_end(int status, bool namespaces, Outcome& outcome) {
     outcome.started = true;
     if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
     else if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
-    // bubblewrap reports a program killed by signal n as the exit status 128 + n.
     if (namespaces && outcome.exit_code > 128 && outcome.exit_code < 128 + NSIG)
         outcome.signal = outcome.exit_code - 128, outcome.exit_code = -1;
+}
+
+}  // namespace
+
+Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
+                    const std::string& output_path, const Limits& limits, std::string* report_text,
+                    std::size_t report_limit, bool* report_overflow) {
+    Outcome outcome;
+    if (report_overflow) *report_overflow = false;
+    if (report_text) report_text->clear();
+    Launch launch;
+    Pipes pipes;
+    outcome.error = prepare_launch(argv, cwd, limits, launch);
+    if (outcome.error.empty()) outcome.error = open_pipes(report_text != nullptr, pipes);
+    if (!outcome.error.empty()) return outcome;
+    const pid_t parent = getpid();
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        outcome.error = std::string("fork: ") + std::strerror(errno);
+        for (const int fd : {pipes.exec[0], pipes.exec[1], pipes.channel[0], pipes.channel[1]})
+            if (fd >= 0) close(fd);
+        return outcome;
+    }
+    if (pid == 0) run_child(launch, pipes, report_text != nullptr, parent, cwd, output_path, limits);
+    setpgid(pid, pid);
+    running_group = pid;
+    close(pipes.exec[1]);
+    if (launch.program >= 0) close(launch.program), launch.program = -1;
+    const ReportReader report{pipes.channel[0], report_text, report_limit, report_overflow};
+    if (report_text) {
+        close(pipes.channel[1]);
+        fcntl(pipes.channel[0], F_SETFL, O_NONBLOCK);
+    }
+    int exec_errno = 0;
+    const bool exec_failed = read(pipes.exec[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
+    close(pipes.exec[0]);
+    const int status = wait_until(pid, start + std::chrono::duration<double>(limits.wall_seconds), report,
+                                  &outcome.timed_out);
+    kill(-pid, SIGKILL);  // anything it left behind in its group
+    running_group = 0;
+    if (report_text) {
+        report.drain();
+        close(pipes.channel[0]);
+    }
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (exec_failed) {
+        outcome.error = "cannot run " + launch.command[0] + ": " + std::strerror(exec_errno);
+        return outcome;
+    }
+    record_end(status, launch.namespaces, outcome);
     return outcome;
 }
 

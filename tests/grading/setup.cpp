@@ -69,7 +69,8 @@ std::string compile_template(const std::string& compile_commands, const std::vec
 
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
-    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "solutions"}) {
+    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "exercises/provided/rigid",
+                               "solutions", "solutions/reference"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
@@ -97,28 +98,19 @@ std::string relative_to_root(const Setup& setup, std::string text) {
 }
 
 // ---- the manifest ----------------------------------------------------------------------------
-std::string make_manifest(const std::string& topics_path, const std::string& points_path,
-                          const std::string& out_path) {
-    bool ok = false;
-    const std::string facts = read_file(topics_path, &ok);
-    if (!ok) return "cannot read " + topics_path;
-    std::string root;
-    struct Listed {
-        std::string topic, chapter, reference;
-    };
-    std::vector<Listed> topics;
-    for (const auto& line : split(facts, '\n')) {
-        const auto f = split(line, '\t');
-        if (f[0] == "root" && f.size() > 1) root = f[1];
-        else if (f[0] == "topic" && f.size() > 2) topics.push_back({f[1], f[2], ""});
-        else if (f[0] == "reference" && f.size() > 1 && !topics.empty()) topics.back().reference = f[1];
-    }
-    // Points per exercise: "<exercise> <points>" lines; 1 point for an exercise not listed.
-    std::map<std::string, double> points;
-    std::map<std::string, bool> used;
-    const std::string points_text = read_file(points_path);
+namespace {
+
+// A topic as topics.txt lists it: its chapter and its reference grader.
+struct Listed {
+    std::string topic, chapter, reference;
+};
+
+// Points per exercise: "<exercise> <points>" lines; 1 point for an exercise not listed. Returns
+// an empty string or the error.
+std::string read_points(const std::string& points_path, std::map<std::string, double>& points,
+                        std::map<std::string, bool>& used) {
     int number = 0;
-    for (const auto& raw : split(points_text, '\n')) {
+    for (const auto& raw : split(read_file(points_path), '\n')) {
         ++number;
         const std::string line = trim(raw.substr(0, raw.find('#')));
         if (line.empty()) continue;
@@ -129,68 +121,102 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
         points[name] = p;
         used[name] = false;
     }
-    // Chapter titles from the table of contents.
-    std::map<std::string, Chapter> chapters;
-    for (const auto& line : split(read_file(root + "/chapters/README.md"), '\n')) {
-        const auto close = line.find("/README.md)");
-        const auto open = line.rfind("](", close);
-        const auto bracket = line.rfind('[', open);
-        if (close == std::string::npos || open == std::string::npos || bracket == std::string::npos) continue;
-        Chapter c;
-        c.slug = line.substr(open + 2, close - open - 2);
-        c.title = line.substr(bracket + 1, open - bracket - 1);
-        if (c.slug.size() < 3 || !isdigit(static_cast<unsigned char>(c.slug[0])) || !isdigit(static_cast<unsigned char>(c.slug[1]))) continue;
-        c.number = std::stoi(c.slug.substr(0, 2));
-        c.label = "ch" + c.slug.substr(0, 2);
-        chapters[c.label] = c;
-    }
+    return {};
+}
 
+// Chapter titles from the table of contents, as CMake read it (<build>/contents.json). Returns an
+// empty string or the error.
+std::string read_contents(const std::string& contents, const std::string& topics_path,
+                          std::map<std::string, Chapter>& chapters) {
+    bool ok = false;
+    const std::string contents_text = read_file(contents, &ok);
+    if (!ok) return "cannot read the table of contents " + contents + " (" + topics_path + " names it)";
+    const nlohmann::json toc = nlohmann::json::parse(contents_text, nullptr, false);
+    if (!toc.is_object() || !toc.contains("chapters") || !toc["chapters"].is_array())
+        return contents + ": not the table of contents CMake writes ({\"chapters\": [...]})";
+    for (const auto& c : toc["chapters"]) {
+        const std::string label = c.value("label", "");
+        chapters[label] = Chapter{label, c.value("number", 0), c.value("folder", ""), c.value("title", "")};
+    }
+    return {};
+}
+
+// The exercises and tests of a topic, from its reference grader's list of test cases (JSON
+// lines). Returns an empty string or the error.
+std::string list_exercises(const Listed& t, const std::string& root, const std::string& work,
+                           std::vector<Exercise>& exercises) {
+    Limits limits;
+    limits.wall_seconds = 60;
+    limits.forbid_processes = false;
+    const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
+    const std::string listing = read_file(work);
+    std::remove(work.c_str());
+    if (!o.started || o.exit_code != 0) return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
+    const std::string test_file = "tests/" + t.topic + "_test.cpp";
+    for (const auto& line : split(listing, '\n')) {
+        const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+        if (!j.is_object() || !j.contains("test")) continue;
+        const std::string filename = j.value("file", "");
+        // The path as the compiler saw it: absolute, or relative when a compiler cache rewrote it.
+        if (filename != root + "/" + test_file && !ends_with(filename, "/" + test_file) && filename != test_file) continue;
+        const std::string name = j.value("test", "");
+        const auto colon = name.find(':');
+        if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
+            return test_file + ": the test \"" + name + "\" is not named \"<function>: <property>\"";
+        const std::string exercise = name.substr(0, colon);
+        Exercise* e = nullptr;
+        for (auto& x : exercises)
+            if (x.name == exercise) e = &x;
+        if (!e) {
+            exercises.push_back({exercise, 1, {}});
+            e = &exercises.back();
+        }
+        e->tests.push_back({name, j.value("line", 0)});
+    }
+    if (exercises.empty()) return t.reference + " lists no tests from " + test_file;
+    return {};
+}
+
+// The chapter line of the manifest (a chapter not linked from the contents yet: its label).
+std::string chapter_line(const std::string& label, const std::map<std::string, Chapter>& chapters) {
+    Chapter c{label, 0, label, label};
+    const auto digits = label.find_first_of("0123456789");
+    if (digits != std::string::npos) c.number = std::atoi(label.c_str() + digits);
+    if (const auto it = chapters.find(label); it != chapters.end()) c = it->second;
+    return "chapter\t" + c.label + "\t" + std::to_string(c.number) + "\t" + c.slug + "\t" + c.title + "\n";
+}
+
+}  // namespace
+
+std::string make_manifest(const std::string& topics_path, const std::string& points_path,
+                          const std::string& out_path) {
+    bool ok = false;
+    const std::string facts = read_file(topics_path, &ok);
+    if (!ok) return "cannot read " + topics_path;
+    std::string root, contents;
+    std::vector<Listed> topics;
+    for (const auto& line : split(facts, '\n')) {
+        const auto f = split(line, '\t');
+        if (f[0] == "root" && f.size() > 1) root = f[1];
+        else if (f[0] == "contents" && f.size() > 1) contents = f[1];
+        else if (f[0] == "topic" && f.size() > 2) topics.push_back({f[1], f[2], ""});
+        else if (f[0] == "reference" && f.size() > 1 && !topics.empty()) topics.back().reference = f[1];
+    }
+    std::map<std::string, double> points;
+    std::map<std::string, bool> used;
+    std::map<std::string, Chapter> chapters;
+    if (auto problem = read_points(points_path, points, used); !problem.empty()) return problem;
+    if (auto problem = read_contents(contents, topics_path, chapters); !problem.empty()) return problem;
     std::string out =
         "# The grading manifest: every exercise and test that `cmake/workbook grade` and `check` grade.\n"
-        "# Generated at build time from the workbook_grader() declarations and the reference graders'\n"
+        "# Generated at build time from the workbook_topic() declarations and the reference graders'\n"
         "# test lists; points per exercise from tests/grading/points.txt. Do not edit.\n";
     std::set<std::string> chapters_written;
-    const std::string work = out_path + ".list";
     for (const auto& t : topics) {
-        Limits limits;
-        limits.wall_seconds = 60;
-        limits.forbid_processes = false;
-        const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
-        const std::string listing = read_file(work);
-        std::remove(work.c_str());
-        if (!o.started || o.exit_code != 0) return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
-        const std::string test_file = "tests/" + t.topic + "_test.cpp";
         std::vector<Exercise> exercises;
-        for (const auto& line : split(listing, '\n')) {
-            const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-            if (!j.is_object() || !j.contains("test")) continue;
-            const std::string filename = j.value("file", "");
-            // The path as the compiler saw it: absolute, or relative when a compiler cache rewrote it.
-            if (filename != root + "/" + test_file && !ends_with(filename, "/" + test_file) && filename != test_file) continue;
-            const std::string name = j.value("test", "");
-            const auto colon = name.find(':');
-            if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
-                return test_file + ": the test \"" + name + "\" is not named \"<function>: <property>\"";
-            const std::string exercise = name.substr(0, colon);
-            Exercise* e = nullptr;
-            for (auto& x : exercises)
-                if (x.name == exercise) e = &x;
-            if (!e) {
-                exercises.push_back({exercise, 1, {}});
-                e = &exercises.back();
-            }
-            e->tests.push_back({name, j.value("line", 0)});
-        }
-        if (exercises.empty()) return t.reference + " lists no tests from " + test_file;
-        if (!chapters_written.count(t.chapter)) {
-            chapters_written.insert(t.chapter);
-            Chapter c{t.chapter, 0, t.chapter, t.chapter};  // not linked from the contents yet
-            const auto digits = t.chapter.find_first_of("0123456789");
-            if (digits != std::string::npos) c.number = std::atoi(t.chapter.c_str() + digits);
-            if (chapters.count(t.chapter)) c = chapters[t.chapter];
-            out += "chapter\t" + c.label + "\t" + std::to_string(c.number) + "\t" + c.slug + "\t" + c.title + "\n";
-        }
-        out += "topic\t" + t.topic + "\t" + t.chapter + "\t" + test_file + "\n";
+        if (auto problem = list_exercises(t, root, out_path + ".list", exercises); !problem.empty()) return problem;
+        if (chapters_written.insert(t.chapter).second) out += chapter_line(t.chapter, chapters);
+        out += "topic\t" + t.topic + "\t" + t.chapter + "\ttests/" + t.topic + "_test.cpp\n";
         for (const auto& e : exercises) {
             double p = 1;
             if (points.count(e.name)) p = points[e.name], used[e.name] = true;
@@ -206,16 +232,12 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
     return write_file(out_path, out) ? "" : "cannot write " + out_path;
 }
 
-std::string load_setup(const std::string& dir, Setup& setup) {
-    setup = Setup{};
-    setup.dir = dir;
-    bool ok = false;
-    const std::string facts = read_file(dir + "/topics.txt", &ok);
-    if (!ok) return "cannot read " + dir + "/topics.txt: build the target `grading` first";
-    setup.manifest_text = read_file(dir + "/manifest.txt", &ok);
-    if (!ok) return "cannot read " + dir + "/manifest.txt: build the target `grading` first";
-    std::string compile_commands;
-    std::map<std::string, Topic> built;
+// ---- the setup of a grading run ---------------------------------------------------------------
+namespace {
+
+// topics.txt: the build's facts, and per topic its reference grader, objects and link line.
+void read_build_facts(const std::string& facts, Setup& setup, std::string& compile_commands,
+                      std::map<std::string, Topic>& built) {
     std::string current;
     for (const auto& line : split(facts, '\n')) {
         auto f = split(line, '\t');
@@ -234,10 +256,15 @@ std::string load_setup(const std::string& dir, Setup& setup) {
                     if (!item.empty()) list.push_back(item);
         }
     }
-    // Record and replay (tests/grading/CMakeLists.txt).
+}
+
+// replay.txt: record and replay per topic (tests/grading/CMakeLists.txt). Returns an empty
+// string or the error.
+std::string read_replay_facts(const std::string& dir, std::map<std::string, Topic>& built) {
+    bool ok = false;
     const std::string replay_facts = read_file(dir + "/replay.txt", &ok);
     if (!ok) return "cannot read " + dir + "/replay.txt: build the target `grading` first";
-    current.clear();
+    std::string current;
     for (const auto& line : split(replay_facts, '\n')) {
         const auto f = split(line, '\t');
         if (f[0] == "topic" && f.size() > 1) current = f[1];
@@ -254,6 +281,13 @@ std::string load_setup(const std::string& dir, Setup& setup) {
             if (!have) return "cannot read " + f[1] + ": build the target `grading` first";
         }
     }
+    return {};
+}
+
+// The manifest: chapters, topics (with how to compile a student's file), exercises and tests.
+// Returns an empty string or the error.
+std::string read_manifest(const std::string& dir, const std::string& compile_commands,
+                          std::map<std::string, Topic>& built, Setup& setup) {
     for (const auto& line : split(setup.manifest_text, '\n')) {
         const auto f = split(line, '\t');
         if (f[0] == "chapter" && f.size() > 4) {
@@ -279,8 +313,11 @@ std::string load_setup(const std::string& dir, Setup& setup) {
         }
     }
     if (setup.topics.empty()) return dir + "/manifest.txt lists no topics";
+    return {};
+}
 
-    // The fingerprint of the instructor's side: what is graded, how, and with which sources.
+// The fingerprint of the instructor's side: what is graded, how, and with which sources.
+std::string instructor_fingerprint(const std::string& dir, const Setup& setup) {
     std::string all = std::string(harness_version) + "\n" + setup.manifest_text;
     for (const auto& t : setup.topics) {
         for (const auto& w : t.compile) all += relative_to_root(setup, w) + " ";
@@ -300,7 +337,25 @@ std::string load_setup(const std::string& dir, Setup& setup) {
     all += "\n" + split(read_file(version_file), '\n')[0] + "\n";
     std::remove(version_file.c_str());
     all += hash_instructor_files(setup.root);
-    setup.fingerprint = hex(hash(all));
+    return hex(hash(all));
+}
+
+}  // namespace
+
+std::string load_setup(const std::string& dir, Setup& setup) {
+    setup = Setup{};
+    setup.dir = dir;
+    bool ok = false;
+    const std::string facts = read_file(dir + "/topics.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/topics.txt: build the target `grading` first";
+    setup.manifest_text = read_file(dir + "/manifest.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/manifest.txt: build the target `grading` first";
+    std::string compile_commands;
+    std::map<std::string, Topic> built;
+    read_build_facts(facts, setup, compile_commands, built);
+    if (auto problem = read_replay_facts(dir, built); !problem.empty()) return problem;
+    if (auto problem = read_manifest(dir, compile_commands, built, setup); !problem.empty()) return problem;
+    setup.fingerprint = instructor_fingerprint(dir, setup);
     return {};
 }
 

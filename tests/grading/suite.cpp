@@ -16,10 +16,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 
 #include "grading.hpp"
@@ -140,278 +142,329 @@ bool same_file(const std::string& a, const std::string& b) {
     return ok_a && ok_b && x == y;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The suite's options.
+struct Args {
     std::string setup_dir, harness, cases_dir, work;
     int count = 0, jobs = 2;
     std::string timeout = "2";
+};
+
+// Returns 0, or the exit status of a wrong command line.
+int parse(int argc, char** argv, Args& a) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string o = argv[i], v = argv[i + 1];
-        if (o == "--setup") setup_dir = v;
-        else if (o == "--harness") harness = v;
-        else if (o == "--cases") cases_dir = v;
-        else if (o == "--work") work = v;
-        else if (o == "--count") count = std::stoi(v);
-        else if (o == "--jobs") jobs = std::stoi(v);
-        else if (o == "--timeout") timeout = v;
+        if (o == "--setup") a.setup_dir = v;
+        else if (o == "--harness") a.harness = v;
+        else if (o == "--cases") a.cases_dir = v;
+        else if (o == "--work") a.work = v;
+        else if (o == "--count") a.count = std::stoi(v);
+        else if (o == "--jobs") a.jobs = std::stoi(v);
+        else if (o == "--timeout") a.timeout = v;
         else return std::fprintf(stderr, "grading_suite: unknown option %s\n", o.c_str()), 2;
     }
-    if (setup_dir.empty() || harness.empty() || cases_dir.empty() || work.empty())
+    if (a.setup_dir.empty() || a.harness.empty() || a.cases_dir.empty() || a.work.empty())
         return std::fprintf(stderr, "usage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> [--count n]\n"), 2;
-    Setup setup;
-    if (const auto problem = load_setup(setup_dir, setup); !problem.empty())
-        return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
+    return 0;
+}
 
-    const std::string sandbox = configure_sandbox();
-    const bool root = geteuid() == 0, namespaces = isolation() == Isolation::namespaces;
-    std::printf("== %s%s\n", sandbox.c_str(), root ? " (running as root)" : "");
+// One run of the suite: the class of submissions made from the cases, where they are graded,
+// and every problem found.
+struct Suite {
+    Args a;
+    Setup setup;
+    bool root = false, namespaces = false;
     std::vector<Case> cases;
     std::vector<std::string> skipped;
-    for (const auto& name : list_dir(cases_dir)) {
+    std::map<std::string, const Case*> case_of;  // student -> case
+    int n = 0;
+    static constexpr long max_file_kb = 64;
+    std::string subs, out, options, grade;
+    std::vector<std::string> run_args;
+    std::vector<std::string> problems;
+};
+
+// The cases; a trick that needs root (to prove what root cannot do) or the namespaces (to prove
+// what they hide) is graded only where that holds, and named when it is not.
+void read_cases(Suite& s) {
+    for (const auto& name : list_dir(s.a.cases_dir)) {
         if (!ends_with(name, ".cpp")) continue;
-        Case c = read_case(cases_dir + "/" + name, name.substr(0, name.size() - 4));
-        // A trick that needs root (to prove what root cannot do) or the namespaces (to prove what
-        // they hide) is graded only where that holds, and named when it is not.
-        if ((c.needs_root && !root) || (c.needs_namespaces && !namespaces)) {
-            skipped.push_back(c.name);
+        Case c = read_case(s.a.cases_dir + "/" + name, name.substr(0, name.size() - 4));
+        if ((c.needs_root && !s.root) || (c.needs_namespaces && !s.namespaces)) {
+            s.skipped.push_back(c.name);
             continue;
         }
-        cases.push_back(c);
+        s.cases.push_back(c);
     }
-    if (cases.empty()) return std::fprintf(stderr, "grading_suite: no cases in %s\n", cases_dir.c_str()), 2;
+}
 
-    // The submissions: one per case, or <count> cycling through them.
-    const long max_file_kb = 64;
-    remove_tree(work);
-    const std::string subs = work + "/submissions", out = work + "/out";
+// The submission of one case into `folder`. Returns an empty string or the error.
+std::string write_submission(const Suite& s, const Case& c, const std::string& folder, const std::string& student) {
+    const std::string file = folder + "/" + c.topic + ".cpp";
+    const std::string reference = s.setup.root + "/solutions/" + c.topic + ".cpp";
+    if (c.make == "reference" || c.make == "stubs") {
+        for (const auto& t : s.setup.topics)
+            if (c.make == "reference" || t.name == c.topic)
+                write_file(folder + "/" + t.name + ".cpp",
+                           read_file(c.make == "reference" ? s.setup.root + "/solutions/" + t.name + ".cpp" : pristine_stub(s.setup, t.name)));
+    } else if (c.make == "missing") {
+    } else if (c.make == "symlink") {
+        if (symlink(reference.c_str(), file.c_str()) != 0) return std::string("symlink: ") + std::strerror(errno);
+    } else if (c.make == "oversized") {
+        std::string text = read_file(reference) + "\n/*";
+        while (text.size() <= static_cast<std::size_t>(Suite::max_file_kb * 1024)) text += " padding padding padding padding\n";
+        write_file(file, text + "*/\n");
+    } else if (!c.make.empty()) {
+        return c.name + ": unknown make: " + c.make;
+    } else {
+        // The case's code after solutions/<topic>.cpp (or the stub, with base: stubs).
+        const std::string base = c.base == "stubs" ? pristine_stub(s.setup, c.topic) : reference;
+        std::string text = "// Generated by grading_suite from tests/grading/cases/" + c.name + ".cpp and " +
+                           relative_to_root(s.setup, base) + "\n";
+        for (const auto& f : c.replace) text += "#define " + f + " " + f + "_reference_unused\n";
+        text += read_file(base);
+        for (const auto& f : c.replace) text += "#undef " + f + "\n";
+        std::string body = replace_all(c.body, "@ROOT@", s.setup.root);
+        body = replace_all(body, "@BUILD@", s.setup.build);
+        body = replace_all(body, "@OUT@", s.out);
+        body = replace_all(body, "@STUDENT@", student);
+        write_file(file, text + "\n// The case:\n" + body);
+    }
+    return {};
+}
 
-    make_dirs(subs);
-    std::map<std::string, const Case*> case_of;
-    const int n = count > 0 ? count : static_cast<int>(cases.size());
-    for (int k = 0; k < n; ++k) {
-        const Case& c = cases[static_cast<std::size_t>(k) % cases.size()];
+// The submissions: one per case, or <count> cycling through them. Returns an empty string or the error.
+std::string make_submissions(Suite& s) {
+    remove_tree(s.a.work);
+    make_dirs(s.subs);
+    s.n = s.a.count > 0 ? s.a.count : static_cast<int>(s.cases.size());
+    for (int k = 0; k < s.n; ++k) {
+        const Case& c = s.cases[static_cast<std::size_t>(k) % s.cases.size()];
         char prefix[16];
         std::snprintf(prefix, sizeof prefix, "s%02d_", k + 1);
-        const std::string student = count > 0 ? prefix + c.name : c.name;
-        case_of[student] = &c;
-        const std::string folder = subs + "/" + student + "/exercises";
+        const std::string student = s.a.count > 0 ? prefix + c.name : c.name;
+        s.case_of[student] = &c;
+        const std::string folder = s.subs + "/" + student + "/exercises";
         make_dirs(folder);
-        const std::string file = folder + "/" + c.topic + ".cpp";
-        const std::string reference = setup.root + "/solutions/" + c.topic + ".cpp";
-        if (c.make == "reference" || c.make == "stubs") {
-            for (const auto& t : setup.topics)
-                if (c.make == "reference" || t.name == c.topic)
-                    write_file(folder + "/" + t.name + ".cpp",
-                               read_file(c.make == "reference" ? setup.root + "/solutions/" + t.name + ".cpp" : pristine_stub(setup, t.name)));
-        } else if (c.make == "missing") {
-        } else if (c.make == "symlink") {
-            if (symlink(reference.c_str(), file.c_str()) != 0) return std::perror("symlink"), 2;
-        } else if (c.make == "oversized") {
-            std::string text = read_file(reference) + "\n/*";
-            while (text.size() <= static_cast<std::size_t>(max_file_kb * 1024)) text += " padding padding padding padding\n";
-            write_file(file, text + "*/\n");
-        } else if (!c.make.empty()) {
-            return std::fprintf(stderr, "grading_suite: %s: unknown make: %s\n", c.name.c_str(), c.make.c_str()), 2;
-        } else {
-            // The case's code after solutions/<topic>.cpp (or the stub, with base: stubs).
-            const std::string base = c.base == "stubs" ? pristine_stub(setup, c.topic) : reference;
-            std::string text = "// Generated by grading_suite from tests/grading/cases/" + c.name + ".cpp and " +
-                               relative_to_root(setup, base) + "\n";
-            for (const auto& f : c.replace) text += "#define " + f + " " + f + "_reference_unused\n";
-            text += read_file(base);
-            for (const auto& f : c.replace) text += "#undef " + f + "\n";
-            std::string body = replace_all(c.body, "@ROOT@", setup.root);
-            body = replace_all(body, "@BUILD@", setup.build);
-            body = replace_all(body, "@OUT@", out);
-            body = replace_all(body, "@STUDENT@", student);
-            write_file(file, text + "\n// The case:\n" + body);
-        }
+        if (auto problem = write_submission(s, c, folder, student); !problem.empty()) return problem;
     }
+    return {};
+}
 
-    const std::string options = " -j " + std::to_string(jobs) + " --timeout " + timeout +
-                                " --memory 512 --max-file-size " + std::to_string(max_file_kb);
-    const std::string grade = quote(harness) + " grade --setup " + quote(setup_dir) + " " + quote(subs) + " ";
-    std::printf("== Grading %d bad and good submissions\n", n);
+// The first run, and an overlapping run on the same out folder while it grades: refused, with
+// the reason. Returns the first run's wall time.
+double first_run(Suite& s) {
+    const std::string& work = s.a.work;
+    std::printf("== Grading %d bad and good submissions\n", s.n);
     std::fflush(stdout);
-    std::vector<std::string> problems;
-    std::vector<std::string> run_args = {harness, "grade", "--setup", setup_dir, subs, out, "-j", std::to_string(jobs),
-                                         "--timeout", timeout, "--memory", "512", "--max-file-size", std::to_string(max_file_kb)};
     const auto start = std::chrono::steady_clock::now();
     const std::string main_log = work + "/grade.txt", overlap_log = work + "/overlap.txt";
-    const pid_t main_run = start_grading(run_args, main_log);
-    // An overlapping run on the same out folder, while the first one grades: refused, with the reason.
-    if (!wait_for(main_log, "Grading ", main_run, 60)) problems.push_back("the grading run did not start: " + read_file(main_log));
-    const int overlap = wait_exit(start_grading(run_args, overlap_log), 60);
+    const pid_t main_run = start_grading(s.run_args, main_log);
+    if (!wait_for(main_log, "Grading ", main_run, 60)) s.problems.push_back("the grading run did not start: " + read_file(main_log));
+    const int overlap = wait_exit(start_grading(s.run_args, overlap_log), 60);
     if (overlap != 2 || read_file(overlap_log).find("another grading run is writing to") == std::string::npos)
-        problems.push_back("an overlapping run on the same out folder was not refused (status " + std::to_string(overlap) +
-                           "): " + read_file(overlap_log));
+        s.problems.push_back("an overlapping run on the same out folder was not refused (status " + std::to_string(overlap) +
+                             "): " + read_file(overlap_log));
     const int status = wait_exit(main_run, 3600);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s", read_file(main_log).c_str());
     std::printf("== An overlapping run on the same out folder: %s", read_file(overlap_log).c_str());
-    if (status != 0) problems.push_back("the grading run failed (status " + std::to_string(status) + ")");
-    // The first run's timings (run.json is rewritten by every run), and every result as first
-    // written, to prove below that nothing rewrote one later.
-    write_file(work + "/first-run.json", read_file(out + "/run.json"));
-    std::map<std::string, std::string> written;
-    for (const auto& name : list_dir(out + "/results")) written[name] = read_file(out + "/results/" + name);
+    if (status != 0) s.problems.push_back("the grading run failed (status " + std::to_string(status) + ")");
+    // The first run's timings (run.json is rewritten by every run).
+    write_file(work + "/first-run.json", read_file(s.out + "/run.json"));
+    return wall;
+}
 
-    // Every verdict, message and partial score as expected.
-    struct Row {
-        std::string student, description, exercise, expected, got;
-        int tests = 0;
-        double score = 0, max_score = 0;
-    };
-    std::vector<Row> rows;
-    for (const auto& [student, c] : case_of) {
-        SubmissionResult r;
-        if (!read_results_tsv(out + "/results/" + student + ".tsv", r)) {
-            problems.push_back(student + ": no results");
-            continue;
-        }
-        const std::string json = read_file(out + "/results/" + student + ".json");
-        if (json.find("\"tests\": [") == std::string::npos || json.find("\"score\": ") == std::string::npos)
-            problems.push_back(student + ": results.json lacks score or tests");
-        std::map<std::string, double> exercise_score;
-        std::map<std::string, Row> by_key;  // rows of the table: one per expectation of the case
-        for (const auto& t : r.tests) {
-            std::string want = "missing", text;
-            if (t.topic == c->topic || c->make == "reference") want = "pass";
-            if (t.topic == c->topic)
-                if (const Expect* e = expectation(*c, t)) want = e->verdict, text = e->text;
-            const std::string got = t.not_started ? "not started" : t.verdict;
-            if (got != want) problems.push_back(student + ": \"" + t.name + "\": expected " + want + ", got " + got + ": " + t.message);
-            else if (!text.empty() && t.message.find(text) == std::string::npos)
-                problems.push_back(student + ": \"" + t.name + "\": the message lacks \"" + text + "\": " + t.message);
-            exercise_score[t.exercise] += t.score;
-            if (const Expect* e = t.topic == c->topic ? expectation(*c, t) : nullptr) {
-                Row& row = by_key[e->key];
-                row.exercise = e->key == "*" ? "every exercise of " + c->topic : e->key;
-                if (row.expected.find(want) == std::string::npos) row.expected += (row.expected.empty() ? "" : ", ") + want;
-                if (row.got.find(got) == std::string::npos) row.got += (row.got.empty() ? "" : ", ") + got;
-                ++row.tests;
-                row.score += t.score;
-                row.max_score += t.max_score;
-            }
-        }
-        for (const auto& [exercise, points] : c->scores)
-            if (std::abs(exercise_score[exercise] - points) > 1e-9)
-                problems.push_back(student + ": " + exercise + " scored " + format_number(exercise_score[exercise]) +
-                                   ", expected " + format_number(points));
-        if (r.tests.empty()) problems.push_back(student + ": no tests graded");
-        for (auto& [key, row] : by_key) {
-            row.student = student;
-            row.description = c->description;
-            rows.push_back(row);
+// A row of the table: one per expectation of a case.
+struct Row {
+    std::string student, description, exercise, expected, got;
+    int tests = 0;
+    double score = 0, max_score = 0;
+};
+
+// One submission's verdicts, messages and partial scores against its case; its rows.
+void check_submission(Suite& s, const std::string& student, const Case& c, std::vector<Row>& rows) {
+    SubmissionResult r;
+    if (!read_results_tsv(s.out + "/results/" + student + ".tsv", r)) return s.problems.push_back(student + ": no results");
+    const std::string json = read_file(s.out + "/results/" + student + ".json");
+    if (json.find("\"tests\": [") == std::string::npos || json.find("\"score\": ") == std::string::npos)
+        s.problems.push_back(student + ": results.json lacks score or tests");
+    std::map<std::string, double> exercise_score;
+    std::map<std::string, Row> by_key;
+    for (const auto& t : r.tests) {
+        std::string want = "missing", text;
+        if (t.topic == c.topic || c.make == "reference") want = "pass";
+        if (t.topic == c.topic)
+            if (const Expect* e = expectation(c, t)) want = e->verdict, text = e->text;
+        const std::string got = t.not_started ? "not started" : t.verdict;
+        if (got != want) s.problems.push_back(student + ": \"" + t.name + "\": expected " + want + ", got " + got + ": " + t.message);
+        else if (!text.empty() && t.message.find(text) == std::string::npos)
+            s.problems.push_back(student + ": \"" + t.name + "\": the message lacks \"" + text + "\": " + t.message);
+        exercise_score[t.exercise] += t.score;
+        if (const Expect* e = t.topic == c.topic ? expectation(c, t) : nullptr) {
+            Row& row = by_key[e->key];
+            row.exercise = e->key == "*" ? "every exercise of " + c.topic : e->key;
+            if (row.expected.find(want) == std::string::npos) row.expected += (row.expected.empty() ? "" : ", ") + want;
+            if (row.got.find(got) == std::string::npos) row.got += (row.got.empty() ? "" : ", ") + got;
+            ++row.tests;
+            row.score += t.score;
+            row.max_score += t.max_score;
         }
     }
+    for (const auto& [exercise, points] : c.scores)
+        if (std::abs(exercise_score[exercise] - points) > 1e-9)
+            s.problems.push_back(student + ": " + exercise + " scored " + format_number(exercise_score[exercise]) +
+                                 ", expected " + format_number(points));
+    if (r.tests.empty()) s.problems.push_back(student + ": no tests graded");
+    for (auto& [key, row] : by_key) {
+        row.student = student;
+        row.description = c.description;
+        rows.push_back(row);
+    }
+}
 
-    // The class files.
-    const std::string csv = read_file(out + "/class.csv");
-    if (std::count(csv.begin(), csv.end(), '\n') != n + 1) problems.push_back("class.csv does not have one row per submission");
-    if (read_file(out + "/summary.md").find("| Student | Score |") == std::string::npos) problems.push_back("summary.md has no table");
-
-    // Resumed: a second run grades nothing and writes the same class files.
+// Resumed: a second run grades nothing and writes the same class files.
+void check_resumed(Suite& s) {
+    const std::string csv = read_file(s.out + "/class.csv");
+    if (std::count(csv.begin(), csv.end(), '\n') != s.n + 1) s.problems.push_back("class.csv does not have one row per submission");
+    if (read_file(s.out + "/summary.md").find("| Student | Score |") == std::string::npos) s.problems.push_back("summary.md has no table");
     std::printf("== Running again: every submission already graded\n");
     std::fflush(stdout);
-    const std::string before = csv + read_file(out + "/summary.md");
-    const std::string again = work + "/again.txt";
-    if (std::system((grade + quote(out) + options + " > " + quote(again)).c_str()) != 0) problems.push_back("the resumed run failed");
-    if (read_file(again).find("Graded 0 submissions") == std::string::npos) problems.push_back("the resumed run graded again: " + read_file(again));
-    if (read_file(out + "/class.csv") + read_file(out + "/summary.md") != before) problems.push_back("the resumed run changed the class files");
+    const std::string before = csv + read_file(s.out + "/summary.md");
+    const std::string again = s.a.work + "/again.txt";
+    if (std::system((s.grade + quote(s.out) + s.options + " > " + quote(again)).c_str()) != 0) s.problems.push_back("the resumed run failed");
+    if (read_file(again).find("Graded 0 submissions") == std::string::npos) s.problems.push_back("the resumed run graded again: " + read_file(again));
+    if (read_file(s.out + "/class.csv") + read_file(s.out + "/summary.md") != before) s.problems.push_back("the resumed run changed the class files");
+}
 
-    // Deterministic: a few graded again from scratch give the same bytes.
+// Deterministic: a few graded again from scratch give the same bytes.
+void check_deterministic(Suite& s) {
     std::vector<std::string> subset;
-    for (const auto& [student, c] : case_of)
+    for (const auto& [student, c] : s.case_of)
         if (subset.size() < 2 && (c->name == "crash" || c->name == "exit0")) subset.push_back(student);
     std::string only;
-    for (const auto& s : subset) only += (only.empty() ? "" : ",") + s;
+    for (const auto& x : subset) only += (only.empty() ? "" : ",") + x;
     std::printf("== Grading %s again from scratch\n", only.c_str());
     std::fflush(stdout);
-    const std::string out2 = work + "/out-again";
-    if (std::system((grade + quote(out2) + options + " --only " + quote(only)).c_str()) != 0) problems.push_back("the repeated run failed");
-    for (const auto& s : subset)
+    const std::string out2 = s.a.work + "/out-again";
+    if (std::system((s.grade + quote(out2) + s.options + " --only " + quote(only)).c_str()) != 0) s.problems.push_back("the repeated run failed");
+    for (const auto& x : subset)
         for (const char* ext : {".json", ".tsv"})
-            if (!same_file(out + "/results/" + s + ext, out2 + "/results/" + s + ext))
-                problems.push_back(s + ext + " differs between two runs");
+            if (!same_file(s.out + "/results/" + x + ext, out2 + "/results/" + x + ext))
+                s.problems.push_back(x + ext + " differs between two runs");
+}
 
-    // The student's check reaches the same verdicts as the instructor's run.
-    for (const auto& [student, c] : case_of) {
+// The student's check reaches the same verdicts as the instructor's run.
+void check_student_check(Suite& s) {
+    const std::string& work = s.a.work;
+    for (const auto& [student, c] : s.case_of) {
         if (c->name != "partial") continue;
         std::printf("== The student's check of %s\n", student.c_str());
         std::fflush(stdout);
         const std::string check_out = work + "/check";
-        std::system((quote(harness) + " check --setup " + quote(setup_dir) + " --folder " +
-                     quote(subs + "/" + student + "/exercises") + " --out " + quote(check_out) + options + " > " +
+        std::system((quote(s.a.harness) + " check --setup " + quote(s.a.setup_dir) + " --folder " +
+                     quote(s.subs + "/" + student + "/exercises") + " --out " + quote(check_out) + s.options + " > " +
                      quote(work + "/check.txt"))
                         .c_str());
-        const std::string mine = read_file(check_out + "/results.json"), theirs = read_file(out + "/results/" + student + ".json");
+        const std::string mine = read_file(check_out + "/results.json"), theirs = read_file(s.out + "/results/" + student + ".json");
         const auto from_mine = mine.find("\"tests\": ["), from_theirs = theirs.find("\"tests\": [");
         if (from_mine == std::string::npos || from_theirs == std::string::npos ||
             mine.substr(from_mine) != theirs.substr(from_theirs))
-            problems.push_back(student + ": the student's check and the grading run disagree");
+            s.problems.push_back(student + ": the student's check and the grading run disagree");
         if (read_file(work + "/check.txt").find("Chapter 1, ") == std::string::npos)
-            problems.push_back(student + ": the check printed no progress: " + read_file(work + "/check.txt"));
+            s.problems.push_back(student + ": the check printed no progress: " + read_file(work + "/check.txt"));
         // The first failing exercise gets its nudge, Hint 1, and only that (hints.cpp).
         const std::string printed = read_file(work + "/check.txt");
         if (printed.find("Hint 1 of 3 for geodesic_angle") == std::string::npos || printed.find("Hint 2 of") != std::string::npos)
-            problems.push_back(student + ": the check did not print Hint 1 (and only Hint 1) of geodesic_angle: " + printed);
+            s.problems.push_back(student + ": the check did not print Hint 1 (and only Hint 1) of geodesic_angle: " + printed);
         break;
     }
+}
 
-    // Interrupted: SIGTERM to the main process while it grades stops its workers at once and
-    // leaves no result of theirs and no process behind; running again grades them as before.
-    {
-        std::vector<std::string> some;
-        for (const auto& [student, c] : case_of)
-            if (some.size() < 3 && (c->name == "partial" || c->name == "fail" || c->name == "crash" || c->name == "exit0"))
-                some.push_back(student);
-        std::string list;
-        for (const auto& s : some) list += (list.empty() ? "" : ",") + s;
-        const std::string out3 = work + "/out-interrupted", log3 = work + "/interrupted.txt";
-        std::vector<std::string> args = run_args;
-        args[5] = out3;
-        args.insert(args.end(), {"--only", list});
-        std::printf("== SIGTERM to a run grading %s, then the run again\n", list.c_str());
-        const pid_t run = start_grading(args, log3);
-        if (!wait_for(log3, "Grading ", run, 60)) problems.push_back("the run to interrupt did not start: " + read_file(log3));
-        usleep(1500000);  // compiling and testing by now
-        kill(run, SIGTERM);
-        const int code = wait_exit(run, 10);
-        std::printf("%s", read_file(log3).c_str());
-        if (code != 128 + SIGTERM || read_file(log3).find("Interrupted by SIGTERM") == std::string::npos)
-            problems.push_back("the interrupted run did not stop as it should (status " + std::to_string(code) + ")");
-        usleep(300000);
-        for (const auto& p : processes_mentioning(out3)) problems.push_back("left running after the interrupted run: " + p);
-        for (const auto& name : list_dir(out3 + "/.work")) problems.push_back("left in .work by the interrupted run: " + name);
-        const int again = wait_exit(start_grading(args, log3), 600);
-        if (again != 0) problems.push_back("the run after the interrupted one failed: " + read_file(log3));
-        for (const auto& s : some)
-            for (const char* ext : {".json", ".tsv"})
-                if (!same_file(out + "/results/" + s + ext, out3 + "/results/" + s + ext))
-                    problems.push_back(s + ext + ": the run after an interrupted one differs from the first run");
-    }
+// Interrupted: SIGTERM to the main process while it grades stops its workers at once and leaves
+// no result of theirs and no process behind; running again grades them as before.
+void check_interrupted(Suite& s) {
+    std::vector<std::string> some;
+    for (const auto& [student, c] : s.case_of)
+        if (some.size() < 3 && (c->name == "partial" || c->name == "fail" || c->name == "crash" || c->name == "exit0"))
+            some.push_back(student);
+    std::string list;
+    for (const auto& x : some) list += (list.empty() ? "" : ",") + x;
+    const std::string out3 = s.a.work + "/out-interrupted", log3 = s.a.work + "/interrupted.txt";
+    std::vector<std::string> args = s.run_args;
+    args[5] = out3;
+    args.insert(args.end(), {"--only", list});
+    std::printf("== SIGTERM to a run grading %s, then the run again\n", list.c_str());
+    const pid_t run = start_grading(args, log3);
+    if (!wait_for(log3, "Grading ", run, 60)) s.problems.push_back("the run to interrupt did not start: " + read_file(log3));
+    usleep(1500000);  // compiling and testing by now
+    kill(run, SIGTERM);
+    const int code = wait_exit(run, 10);
+    std::printf("%s", read_file(log3).c_str());
+    if (code != 128 + SIGTERM || read_file(log3).find("Interrupted by SIGTERM") == std::string::npos)
+        s.problems.push_back("the interrupted run did not stop as it should (status " + std::to_string(code) + ")");
+    usleep(300000);
+    for (const auto& p : processes_mentioning(out3)) s.problems.push_back("left running after the interrupted run: " + p);
+    for (const auto& name : list_dir(out3 + "/.work")) s.problems.push_back("left in .work by the interrupted run: " + name);
+    const int again = wait_exit(start_grading(args, log3), 600);
+    if (again != 0) s.problems.push_back("the run after the interrupted one failed: " + read_file(log3));
+    for (const auto& x : some)
+        for (const char* ext : {".json", ".tsv"})
+            if (!same_file(s.out + "/results/" + x + ext, out3 + "/results/" + x + ext))
+                s.problems.push_back(x + ext + ": the run after an interrupted one differs from the first run");
+}
 
-    // Nothing rewrote a result after it was written (a process that outlived its test, say).
-    for (const auto& [name, text] : written)
-        if (read_file(out + "/results/" + name) != text) problems.push_back("results/" + name + " changed after it was written");
-    for (const auto& name : skipped)
-        std::printf("== Not run here: the case %s (it needs %s)\n", name.c_str(), root ? "the namespaces sandbox" : "root");
-
-    // The table, and the time per submission.
+// The table, the time per submission and the verdict of the suite.
+int finish(const Suite& s, const std::vector<Row>& rows, double wall) {
+    for (const auto& name : s.skipped)
+        std::printf("== Not run here: the case %s (it needs %s)\n", name.c_str(), s.root ? "the namespaces sandbox" : "root");
     std::printf("\n| Submission | What it does | Exercise | Expected | Got | Tests | Score |\n|---|---|---|---|---|---:|---:|\n");
     for (const auto& row : rows)
         std::printf("| %s | %s | %s | %s | %s | %d | %s / %s |\n", row.student.c_str(), row.description.c_str(),
                     row.exercise.c_str(), row.expected.c_str(), row.got.c_str(), row.tests, format_number(row.score).c_str(),
                     format_number(row.max_score).c_str());
-    std::printf("\n%d submissions graded with -j %d in %s s: %s s per submission (%s/first-run.json has each one's time)\n", n, jobs,
-                format_number(wall).c_str(), format_number(wall / n).c_str(), work.c_str());
-    if (!problems.empty()) {
+    std::printf("\n%d submissions graded with -j %d in %s s: %s s per submission (%s/first-run.json has each one's time)\n", s.n,
+                s.a.jobs, format_number(wall).c_str(), format_number(wall / s.n).c_str(), s.a.work.c_str());
+    if (!s.problems.empty()) {
         std::printf("\ngrading suite FAILED:\n");
-        for (const auto& p : problems) std::printf("  %s\n", p.c_str());
+        for (const auto& p : s.problems) std::printf("  %s\n", p.c_str());
         return 1;
     }
     std::printf("grading suite: every submission got the expected verdicts; resumed and repeated runs agree\n");
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Suite s;
+    if (const int status = parse(argc, argv, s.a); status != 0) return status;
+    if (const auto problem = load_setup(s.a.setup_dir, s.setup); !problem.empty())
+        return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
+    const std::string sandbox = configure_sandbox();
+    s.root = geteuid() == 0, s.namespaces = isolation() == Isolation::namespaces;
+    std::printf("== %s%s\n", sandbox.c_str(), s.root ? " (running as root)" : "");
+    read_cases(s);
+    if (s.cases.empty()) return std::fprintf(stderr, "grading_suite: no cases in %s\n", s.a.cases_dir.c_str()), 2;
+    s.subs = s.a.work + "/submissions", s.out = s.a.work + "/out";
+    if (const auto problem = make_submissions(s); !problem.empty())
+        return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
+    const std::string jobs = std::to_string(s.a.jobs), max_kb = std::to_string(Suite::max_file_kb);
+    s.options = " -j " + jobs + " --timeout " + s.a.timeout + " --memory 512 --max-file-size " + max_kb;
+    s.grade = quote(s.a.harness) + " grade --setup " + quote(s.a.setup_dir) + " " + quote(s.subs) + " ";
+    s.run_args = {s.a.harness, "grade", "--setup", s.a.setup_dir, s.subs, s.out, "-j", jobs,
+                  "--timeout", s.a.timeout, "--memory", "512", "--max-file-size", max_kb};
+    const double wall = first_run(s);
+    // Every result as first written, to prove below that nothing rewrote one later.
+    std::map<std::string, std::string> written;
+    for (const auto& name : list_dir(s.out + "/results")) written[name] = read_file(s.out + "/results/" + name);
+    std::vector<Row> rows;
+    for (const auto& [student, c] : s.case_of) check_submission(s, student, *c, rows);
+    check_resumed(s);
+    check_deterministic(s);
+    check_student_check(s);
+    check_interrupted(s);
+    // Nothing rewrote a result after it was written (a process that outlived its test, say).
+    for (const auto& [name, text] : written)
+        if (read_file(s.out + "/results/" + name) != text) s.problems.push_back("results/" + name + " changed after it was written");
+    return finish(s, rows, wall);
 }

@@ -193,17 +193,20 @@ int similarity(const Args& a) {
 }
 
 // ---- grade -------------------------------------------------------------------------------------
-int grade(const Args& a) {
-    if (a.positional.size() != 2) return fail(std::string("grade needs <submissions-folder> <out-folder>\n") + usage);
-    Setup setup;
-    if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
-    const std::string submissions = absolute(a.positional[0]);
-    const std::string out = absolute(a.positional[1]);
-    if (!is_directory(submissions)) return fail(submissions + " is not a folder");
-    if (starts_with(out + "/", submissions + "/")) return fail("the out folder must not be inside the submissions folder");
+// One submission of the class run: its files, and its result (resumed, or from its worker).
+struct Item {
+    std::string name;
+    std::vector<SubmittedFile> files;
+    std::string fingerprint;
+    bool resumed = false, graded = false, ok = false;
+    double seconds = 0, cpu = 0;
+    SubmissionResult result;
+};
 
-    std::vector<std::string> students, ignored;
-    list_students(submissions, students, ignored);
+// --only: the submissions named (a name with a comma is taken whole when it is one). Returns an
+// empty string or the error.
+std::string select_students(const Args& a, const std::string& submissions, std::vector<std::string>& students) {
+    if (a.only.empty()) return {};
     std::set<std::string> only;
     for (const auto& value : a.only) {
         if (std::find(students.begin(), students.end(), value) != students.end()) {
@@ -213,46 +216,36 @@ int grade(const Args& a) {
         for (const auto& name : split(value, ',')) {
             if (name.empty()) continue;
             if (std::find(students.begin(), students.end(), name) == students.end())
-                return fail("--only " + name + ": no such submission in " + submissions);
+                return "--only " + name + ": no such submission in " + submissions;
             only.insert(name);
         }
     }
-    if (!a.only.empty()) {
-        std::vector<std::string> kept;
-        for (const auto& s : students)
-            if (only.count(s)) kept.push_back(s);
-        students = kept;
-    }
-    if (!make_dirs(out)) return fail("cannot create " + out);
-    // One run at a time on an out folder: a whole-class run holds its lock alone; shards (--only)
-    // share it with each other, and each submission has a lock of its own.
+    std::vector<std::string> kept;
+    for (const auto& s : students)
+        if (only.count(s)) kept.push_back(s);
+    students = kept;
+    return {};
+}
+
+// The out folder, locked: a whole-class run holds its lock alone; shards (--only) share it with
+// each other, and each submission has a lock of its own. Returns an empty string or the error.
+std::string open_out_folder(const Args& a, const Setup& setup, const std::string& out) {
+    if (!make_dirs(out)) return "cannot create " + out;
     const int lock = open((out + "/.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock < 0) return fail("cannot create " + out + "/.lock");
+    if (lock < 0) return "cannot create " + out + "/.lock";
     if (flock(lock, (a.only.empty() ? LOCK_EX : LOCK_SH) | LOCK_NB) != 0)
-        return fail("another grading run is writing to " + out + " (it holds " + out +
-                    "/.lock); wait for it to finish, or stop it, then run again");
+        return "another grading run is writing to " + out + " (it holds " + out +
+               "/.lock); wait for it to finish, or stop it, then run again";
     for (const char* sub : {"results", "logs", ".work", ".locks"})
-        if (!make_dirs(out + "/" + sub)) return fail("cannot create " + out + "/" + sub);
+        if (!make_dirs(out + "/" + sub)) return "cannot create " + out + "/" + sub;
     write_file(out + "/manifest.txt", setup.manifest_text);
+    return {};  // the lock stays held until the run ends
+}
 
-    int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
-    if (jobs < 1) jobs = 1;
-    std::size_t tests = 0;
-    for (const auto& t : setup.topics)
-        for (const auto& e : t.exercises) tests += e.tests.size();
-    const std::string sandbox = configure_sandbox();
-    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s)\n", students.size(),
-                submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str());
-    std::fflush(stdout);
-
-    struct Item {
-        std::string name;
-        std::vector<SubmittedFile> files;
-        std::string fingerprint;
-        bool resumed = false, graded = false, ok = false;
-        double seconds = 0, cpu = 0;
-        SubmissionResult result;
-    };
+// Each submission's files and fingerprint; a complete earlier result for the same inputs is
+// taken as it is (the .tsv is written last, by a worker that finished) unless --force.
+std::vector<Item> collect_items(const Setup& setup, const Args& a, const std::string& submissions,
+                                const std::string& out, const std::vector<std::string>& students) {
     std::vector<Item> items;
     for (const auto& s : students) {
         Item item;
@@ -261,7 +254,6 @@ int grade(const Args& a) {
         item.fingerprint = fingerprint(setup, a.options, item.files, Selection{}.key());
         SubmissionResult previous;
         const std::string base = out + "/results/" + s;
-        // The .tsv is written last, by a worker that finished: it marks a complete result.
         if (!a.force && read_results_tsv(base + ".tsv", previous) && previous.fingerprint == item.fingerprint &&
             previous.json_hash == hex(hash(read_file(base + ".json")))) {
             item.resumed = item.ok = true;
@@ -269,115 +261,121 @@ int grade(const Args& a) {
         }
         items.push_back(std::move(item));
     }
+    return items;
+}
 
-    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
-        struct sigaction action {};
-        action.sa_handler = on_stop;
-        sigemptyset(&action.sa_mask);
-        sigaction(sig, &action, nullptr);  // no SA_RESTART: waiting stops at once
+// The worker of one submission (a child process). Another run (a shard) grading the same
+// submission holds its lock: exit 3. Everything is made in a folder of this worker's own and
+// published when complete: the logs, then results/<student>.json, then the .tsv, which marks
+// completion.
+[[noreturn]] void grade_in_worker(const Setup& setup, const Args& a, const std::string& out, const Item& item) {
+    stop_children_on_signal();
+    prctl(PR_SET_PDEATHSIG, SIGTERM);  // the main process is gone: so is its worker, and what it runs
+    const int mine = open((out + "/.locks/" + item.name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (mine < 0 || flock(mine, LOCK_EX | LOCK_NB) != 0) _exit(3);
+    const std::string work = out + "/.work/" + item.name + "." + std::to_string(getpid());
+    const SubmissionResult r =
+        grade_submission(setup, a.options, item.name, item.files, Selection{}, work, work + ".logs");
+    const std::string base = out + "/results/" + item.name, logs = out + "/logs/" + item.name;
+    remove_tree(logs);
+    bool written = std::rename((work + ".logs").c_str(), logs.c_str()) == 0;
+    const std::string json = results_json(setup, r);
+    written = written && write_file(base + ".json", json) && write_file(base + ".tsv", results_tsv(r, json));
+    std::fflush(stdout);
+    _exit(written ? 0 : 1);
+}
+
+// The pool of workers: at most `jobs` at once, each grading one submission in a child process.
+class Pool {
+public:
+    Pool(const Setup& setup, const Args& a, const std::string& out, std::vector<Item>& items, int jobs)
+        : setup_(setup), a_(a), out_(out), items_(items), jobs_(jobs) {}
+
+    // Grades every item not resumed. Returns -1 when done, or the exit status of an interrupted
+    // or failed run.
+    int run() {
+        for (auto& item : items_)
+            if (item.resumed) report(item);
+        for (;;) {
+            if (!start_workers()) return fail("fork failed");
+            if (running_.empty()) return -1;
+            if (stop_signal) return stop();
+            int status = 0;
+            rusage usage{};
+            const pid_t pid = wait4(-1, &status, WNOHANG, &usage);
+            if (pid == 0) {
+                pollfd none{-1, 0, 0};
+                poll(&none, 0, 20);
+            } else if (pid < 0) {
+                if (errno != EINTR) return -1;
+            } else {
+                finished(pid, status, usage);
+            }
+        }
     }
-    const auto start = std::chrono::steady_clock::now();
-    std::map<pid_t, std::pair<std::size_t, std::chrono::steady_clock::time_point>> running;
-    std::size_t next = 0, done = 0;
-    const std::size_t total = items.size();
-    auto report = [&](const Item& item) {
-        std::map<std::string, int> count;
-        for (const auto& t : item.result.tests) ++count[t.verdict];
-        std::string verdicts;
-        for (const char* v : {"pass", "fail", "timeout", "crash", "build error", "missing"})
-            if (count[v]) verdicts += std::string(verdicts.empty() ? "" : ", ") + std::to_string(count[v]) + " " + v;
-        std::printf("[%*zu/%zu] %-24s %7s / %-5s %s  (%s)\n", static_cast<int>(std::to_string(total).size()), ++done,
-                    total, item.name.c_str(), format_number(item.result.score).c_str(),
-                    format_number(item.result.max_score).c_str(), verdicts.c_str(),
-                    item.resumed ? "already graded" : item.ok ? (format_number(item.seconds) + " s").c_str() : "harness error");
-        std::fflush(stdout);
-    };
-    for (auto& item : items)
-        if (item.resumed) report(item);
-    for (;;) {
-        while (static_cast<int>(running.size()) < jobs && next < items.size()) {
-            Item& item = items[next];
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    bool start_workers() {
+        while (static_cast<int>(running_.size()) < jobs_ && next_ < items_.size()) {
+            Item& item = items_[next_];
             if (item.resumed) {
-                ++next;
+                ++next_;
                 continue;
             }
             std::fflush(stdout);
             std::fflush(stderr);
             const pid_t pid = fork();
-            if (pid < 0) return fail("fork failed");
-            if (pid == 0) {
-                stop_children_on_signal();
-                prctl(PR_SET_PDEATHSIG, SIGTERM);  // the main process is gone: so is its worker, and what it runs
-                // Another run (a shard) grading the same submission holds its lock: leave it alone.
-                const int mine = open((out + "/.locks/" + item.name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-                if (mine < 0 || flock(mine, LOCK_EX | LOCK_NB) != 0) _exit(3);
-                // Everything is made in a folder of this worker's own and published when complete:
-                // the logs, then results/<student>.json, then the .tsv, which marks completion.
-                const std::string work = out + "/.work/" + item.name + "." + std::to_string(getpid());
-                const SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{}, work,
-                                                            work + ".logs");
-                const std::string base = out + "/results/" + item.name, logs = out + "/logs/" + item.name;
-                remove_tree(logs);
-                bool written = std::rename((work + ".logs").c_str(), logs.c_str()) == 0;
-                const std::string json = results_json(setup, r);
-                written = written && write_file(base + ".json", json) && write_file(base + ".tsv", results_tsv(r, json));
-                std::fflush(stdout);
-                _exit(written ? 0 : 1);
-            }
-            running[pid] = {next, std::chrono::steady_clock::now()};
-            ++next;
+            if (pid < 0) return false;
+            if (pid == 0) grade_in_worker(setup_, a_, out_, item);
+            running_[pid] = {next_, Clock::now()};
+            ++next_;
         }
-        if (running.empty()) break;
-        if (stop_signal) {
-            // Interrupted: stop every worker (their tests and compilers die with them) and keep
-            // nothing of theirs; what was complete stays.
-            for (const auto& [pid, slot] : running) kill(pid, SIGTERM);
-            for (const auto& [pid, slot] : running) {
-                for (int k = 0; k < 200 && waitpid(pid, nullptr, WNOHANG) == 0; ++k) usleep(10000);
-                kill(pid, SIGKILL);
-                while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {}
-                const std::string name = items[slot.first].name;
-                remove_tree(out + "/.work/" + name + "." + std::to_string(pid));
-                remove_tree(out + "/.work/" + name + "." + std::to_string(pid) + ".logs");
-            }
-            rmdir((out + "/.work").c_str());
-            std::printf("Interrupted by %s: %zu submissions stopped, no result written for them; %zu graded before. "
-                        "Run again to grade the rest.\n",
-                        signal_name(stop_signal).c_str(), running.size(), done);
-            std::fflush(stdout);
-            return 128 + stop_signal;
+        return true;
+    }
+
+    // Interrupted: stop every worker (their tests and compilers die with them) and keep nothing
+    // of theirs; what was complete stays.
+    int stop() {
+        for (const auto& [pid, slot] : running_) kill(pid, SIGTERM);
+        for (const auto& [pid, slot] : running_) {
+            for (int k = 0; k < 200 && waitpid(pid, nullptr, WNOHANG) == 0; ++k) usleep(10000);
+            kill(pid, SIGKILL);
+            while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {}
+            const std::string name = items_[slot.first].name;
+            remove_tree(out_ + "/.work/" + name + "." + std::to_string(pid));
+            remove_tree(out_ + "/.work/" + name + "." + std::to_string(pid) + ".logs");
         }
-        int status = 0;
-        rusage usage{};
-        const pid_t pid = wait4(-1, &status, WNOHANG, &usage);
-        if (pid == 0) {
-            pollfd none{-1, 0, 0};
-            poll(&none, 0, 20);
-            continue;
-        }
-        if (pid < 0) {
-            if (errno == EINTR) continue;
-            break;
-        }
-        const auto it = running.find(pid);
-        if (it == running.end()) continue;
-        Item& item = items[it->second.first];
-        item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.second).count();
+        rmdir((out_ + "/.work").c_str());
+        std::printf("Interrupted by %s: %zu submissions stopped, no result written for them; %zu graded before. "
+                    "Run again to grade the rest.\n",
+                    signal_name(stop_signal).c_str(), running_.size(), done_);
+        std::fflush(stdout);
+        return 128 + stop_signal;
+    }
+
+    // A worker ended: its time, and its result (or why there is none).
+    void finished(pid_t pid, int status, const rusage& usage) {
+        const auto it = running_.find(pid);
+        if (it == running_.end()) return;
+        Item& item = items_[it->second.first];
+        item.seconds = std::chrono::duration<double>(Clock::now() - it->second.second).count();
         item.cpu = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-        running.erase(it);
+        running_.erase(it);
         item.graded = true;
         if (WIFEXITED(status) && WEXITSTATUS(status) == 3) {
             item.graded = false;
             item.result = SubmissionResult{};
             item.result.student = item.name;
             item.result.notes.push_back("not graded: another grading run is grading it now");
-            std::printf("[%*zu/%zu] %-24s being graded by another run: skipped\n",
-                        static_cast<int>(std::to_string(total).size()), ++done, total, item.name.c_str());
+            std::printf("[%*zu/%zu] %-24s being graded by another run: skipped\n", width(), ++done_, items_.size(),
+                        item.name.c_str());
             std::fflush(stdout);
-            continue;
+            return;
         }
         item.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-                  read_results_tsv(out + "/results/" + item.name + ".tsv", item.result);
+                  read_results_tsv(out_ + "/results/" + item.name + ".tsv", item.result);
         if (!item.ok) {
             item.result = SubmissionResult{};
             item.result.student = item.name;
@@ -385,15 +383,38 @@ int grade(const Args& a) {
         }
         report(item);
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    rmdir((out + "/.work").c_str());  // when empty: other runs (shards) may still be working there
 
-    int graded = 0, errors = 0;
-    double graded_wall = 0, graded_cpu = 0;
-    for (const auto& item : items) {
-        if (item.graded) ++graded, graded_wall += item.seconds, graded_cpu += item.cpu;
-        errors += !item.ok;
+    int width() const { return static_cast<int>(std::to_string(items_.size()).size()); }
+
+    // One line per submission: its score and its verdicts.
+    void report(const Item& item) {
+        std::map<std::string, int> count;
+        for (const auto& t : item.result.tests) ++count[t.verdict];
+        std::string verdicts;
+        for (const char* v : {"pass", "fail", "timeout", "crash", "build error", "missing"})
+            if (count[v]) verdicts += std::string(verdicts.empty() ? "" : ", ") + std::to_string(count[v]) + " " + v;
+        std::printf("[%*zu/%zu] %-24s %7s / %-5s %s  (%s)\n", width(), ++done_, items_.size(), item.name.c_str(),
+                    format_number(item.result.score).c_str(), format_number(item.result.max_score).c_str(),
+                    verdicts.c_str(),
+                    item.resumed ? "already graded" : item.ok ? (format_number(item.seconds) + " s").c_str() : "harness error");
+        std::fflush(stdout);
     }
+
+    const Setup& setup_;
+    const Args& a_;
+    const std::string& out_;
+    std::vector<Item>& items_;
+    int jobs_;
+    std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running_;
+    std::size_t next_ = 0, done_ = 0;
+};
+
+// The totals on the terminal. Returns how many submissions this run graded.
+int print_totals(const std::vector<Item>& items, double wall, int jobs) {
+    int graded = 0;
+    double graded_wall = 0, graded_cpu = 0;
+    for (const auto& item : items)
+        if (item.graded) ++graded, graded_wall += item.seconds, graded_cpu += item.cpu;
     std::printf("Graded %d submissions in %s s with %d jobs (%zu already graded)", graded, format_number(wall).c_str(),
                 jobs, items.size() - graded);
     if (graded)
@@ -401,31 +422,78 @@ int grade(const Args& a) {
                     format_number(graded_wall / graded).c_str(), format_number(graded_cpu / graded).c_str(),
                     format_number(wall / graded).c_str());
     std::printf("\n");
+    return graded;
+}
 
+// run.json: timings and the date. They change from run to run, so they live apart from the results.
+void write_run_json(const std::string& out, const std::vector<Item>& items, int jobs, double wall, int graded) {
+    char date[64];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    char host[256] = "";
+    gethostname(host, sizeof host - 1);
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+    for (const auto& item : items)
+        runs.push_back({{"student", item.name},
+                        {"graded_in_this_run", item.graded},
+                        {"wall_seconds", json_number(item.seconds)},
+                        {"cpu_seconds", json_number(item.cpu)}});
+    write_file(out + "/run.json", json_text({{"finished", date},
+                                             {"host", host},
+                                             {"jobs", jobs},
+                                             {"wall_seconds", json_number(wall)},
+                                             {"graded", graded},
+                                             {"already_graded", items.size() - static_cast<std::size_t>(graded)},
+                                             {"submissions", runs}}));
+}
+
+void on_stop_signals() {
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction action {};
+        action.sa_handler = on_stop;
+        sigemptyset(&action.sa_mask);
+        sigaction(sig, &action, nullptr);  // no SA_RESTART: waiting stops at once
+    }
+}
+
+int grade(const Args& a) {
+    if (a.positional.size() != 2) return fail(std::string("grade needs <submissions-folder> <out-folder>\n") + usage);
+    Setup setup;
+    if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
+    const std::string submissions = absolute(a.positional[0]);
+    const std::string out = absolute(a.positional[1]);
+    if (!is_directory(submissions)) return fail(submissions + " is not a folder");
+    if (starts_with(out + "/", submissions + "/")) return fail("the out folder must not be inside the submissions folder");
+    std::vector<std::string> students, ignored;
+    list_students(submissions, students, ignored);
+    if (const auto problem = select_students(a, submissions, students); !problem.empty()) return fail(problem);
+    if (const auto problem = open_out_folder(a, setup, out); !problem.empty()) return fail(problem);
+
+    const int jobs = std::max(1, a.jobs > 0 ? a.jobs : static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN)));
+    std::size_t tests = 0;
+    for (const auto& t : setup.topics)
+        for (const auto& e : t.exercises) tests += e.tests.size();
+    const std::string sandbox = configure_sandbox();
+    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s)\n", students.size(),
+                submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str());
+    std::fflush(stdout);
+    std::vector<Item> items = collect_items(setup, a, submissions, out, students);
+    on_stop_signals();
+    const auto start = std::chrono::steady_clock::now();
+    if (const int status = Pool(setup, a, out, items, jobs).run(); status >= 0) return status;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rmdir((out + "/.work").c_str());  // when empty: other runs (shards) may still be working there
+    const int graded = print_totals(items, wall, jobs);
     if (a.only.empty()) {
         std::vector<SubmissionResult> results;
         std::vector<ClassFiles> files;
         for (const auto& item : items) results.push_back(item.result), files.push_back({item.name, item.files});
         write_class_files(setup, a, out, results, files, ignored);
-        // Timings and the date: they change from run to run, so they live apart from the results.
-        char date[64];
-        const std::time_t now = std::time(nullptr);
-        std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-        char host[256] = "";
-        gethostname(host, sizeof host - 1);
-        std::string run = "{\n  \"finished\": " + json_string(date) + ",\n  \"host\": " + json_string(host) +
-                          ",\n  \"jobs\": " + std::to_string(jobs) + ",\n  \"wall_seconds\": " + format_number(wall) +
-                          ",\n  \"graded\": " + std::to_string(graded) + ",\n  \"already_graded\": " +
-                          std::to_string(items.size() - graded) + ",\n  \"submissions\": [";
-        for (std::size_t k = 0; k < items.size(); ++k)
-            run += std::string(k ? ",\n" : "\n") + "    {\"student\": " + json_string(items[k].name) +
-                   ", \"graded_in_this_run\": " + (items[k].graded ? "true" : "false") + ", \"wall_seconds\": " +
-                   format_number(items[k].seconds) + ", \"cpu_seconds\": " + format_number(items[k].cpu) + "}";
-        run += "\n  ]\n}\n";
-        write_file(out + "/run.json", run);
-        std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n", out.c_str(), out.c_str(),
-                    out.c_str());
+        write_run_json(out, items, jobs, wall, graded);
+        std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n",
+                    out.c_str(), out.c_str(), out.c_str());
     }
+    const bool errors = std::any_of(items.begin(), items.end(), [](const Item& item) { return !item.ok; });
     return errors ? 1 : 0;
 }
 

@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include "listener.hpp"
 #include "rigid/todo.hpp"
 
 namespace workbook_replay::record {
@@ -34,23 +35,13 @@ void flush() {
 }
 
 // The end of the test case, as the student's process saw it.
-struct EndMarker : doctest::IReporter {
+struct EndMarker : checks::Listener {
     explicit EndMarker(const doctest::ContextOptions&) {}
-    void report_query(const doctest::QueryData&) override {}
-    void test_run_start() override {}
     void test_run_end(const doctest::TestRunStats&) override { flush(); }
-    void test_case_start(const doctest::TestCaseData&) override {}
-    void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats&) override {
         append(std::string(1, static_cast<char>(tag_end)));
         flush();
     }
-    void test_case_exception(const doctest::TestCaseException&) override {}
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
-    void log_assert(const doctest::AssertData&) override {}
-    void log_message(const doctest::MessageData&) override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 
 REGISTER_LISTENER("workbook_record", 2, EndMarker);

@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include "listener.hpp"
 #include "rigid/todo.hpp"
 
 namespace workbook_replay::replay {
@@ -51,20 +52,9 @@ void load() {
 }
 
 // Loads the record when the test case starts: exactly one test case runs per replay process.
-struct Loader : doctest::IReporter {
+struct Loader : checks::Listener {
     explicit Loader(const doctest::ContextOptions&) {}
-    void report_query(const doctest::QueryData&) override {}
-    void test_run_start() override {}
-    void test_run_end(const doctest::TestRunStats&) override {}
     void test_case_start(const doctest::TestCaseData&) override { load(); }
-    void test_case_reenter(const doctest::TestCaseData&) override {}
-    void test_case_end(const doctest::CurrentTestCaseStats&) override {}
-    void test_case_exception(const doctest::TestCaseException&) override {}
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
-    void log_assert(const doctest::AssertData&) override {}
-    void log_message(const doctest::MessageData&) override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 
 REGISTER_LISTENER("workbook_replay", 0, Loader);
