@@ -505,7 +505,7 @@ TEST_CASE("integrate_grioli: gives an implicit method the Jacobian") {
 // grioli_energy is a derivation exercise: its closed form is nowhere in the contract. The graders
 // evaluate H = (Omega, J Omega)/2 + f (k, R z(0)) here along the exact motion, with a, k and
 // alpha of [P, (4.5)-(4.11)] written out in long double from the gaps.
-TEST_CASE("grioli_energy: equals (Omega, J Omega)/2 + f (k, R z0) along the precession at any instant") {
+TEST_CASE("grioli_energy: equals (Omega J Omega)/2 + f (k R z0) along the precession at any instant") {
     for (int n = 0; n < 20; ++n) {
         const Gaps g = random_gaps();
         const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);
@@ -525,7 +525,7 @@ TEST_CASE("grioli_energy: equals (Omega, J Omega)/2 + f (k, R z0) along the prec
     }
 }
 
-TEST_CASE("grioli_energy: keeps its digits for nearly symmetric and flat bodies, against long double") {
+TEST_CASE("grioli_energy: keeps its digits for nearly symmetric and flat bodies against long double") {
     for (const auto& [BA, CB] : {std::pair{1e-9, 0.8}, {0.8, 1e-9}, {1e-12, 0.2}, {0.4, 0.6}}) {
         const Gaps g{1.0, BA, CB};
         const rigid::Moments m = rigid::moments_from_gaps(g.A, g.BA, g.CB);

@@ -668,7 +668,7 @@ TEST_CASE("circular_section_normals: rejects a tensor that is not symmetric or n
 
 // grioli_line_axial_moment is a derivation exercise: its closed form is in no contract. The graders
 // evaluate (z, I' z) here in binary128 from (5.2) and the z of (5.14) written out, at many L.
-TEST_CASE("grioli_line_axial_moment: equals (z, I' z) on both Grioli lines at every L, in binary128") {
+TEST_CASE("grioli_line_axial_moment: equals (z I' z) on both Grioli lines at every L in binary128") {
     for (int n = 0; n < 20; ++n) {
         const BodyAtG b = random_body();
         const quad Ag = b.A_g, Bg = b.B_g, Cg = b.C_g, CA = Cg - Ag;
@@ -687,7 +687,7 @@ TEST_CASE("grioli_line_axial_moment: equals (z, I' z) on both Grioli lines at ev
     }
 }
 
-TEST_CASE("grioli_line_axial_moment: is the same for a nearly symmetric body, to a few eps") {
+TEST_CASE("grioli_line_axial_moment: is the same for a nearly symmetric body to a few eps") {
     for (const auto& [Ag, Bg, Cg] : {std::tuple{1.0, 1.0 + 1e-12, 1.7}, {1.0, 1.7 - 1e-12, 1.7}, {1.0, 1.5, 2.0}}) {
         const BodyAtG b{Ag, Bg, Cg, 2.0};
         const quad CA = quad(Cg) - Ag, zA2 = (quad(Bg) - Ag) / CA, zC2 = (quad(Cg) - Bg) / CA;

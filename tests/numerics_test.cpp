@@ -342,7 +342,7 @@ TEST_CASE("triple_jump: makes the Strang splitting fourth order") {
 // rk4_energy_loss is a derivation exercise: its closed form is in no contract. The graders take
 // one classical RK4 step of q' = p, p' = -q (omega = 1, h = x) here in binary128 and measure
 // the energy before and after.
-TEST_CASE("rk4_energy_loss: equals 1 - E(h)/E(0) of one RK4 step taken in binary128, down to x = 0.01") {
+TEST_CASE("rk4_energy_loss: equals 1 - E(h)/E(0) of one RK4 step taken in binary128 down to x = 0.01") {
     using quadref::quad;
     for (double x : {0.01, 0.03, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 2.5, 2.7, 3.0}) {
         for (const auto& [q0, p0] : {std::pair{1.0, 0.0}, {0.3, -0.7}}) {

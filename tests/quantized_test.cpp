@@ -532,7 +532,7 @@ TEST_CASE("spin_angle_rate: equals the central difference of the angle along (6.
     }
 }
 
-TEST_CASE("spin_angle_rate: is tiny but right near theta = 0 and pi, and 0 at 90 degrees") {
+TEST_CASE("spin_angle_rate: is tiny but right near theta = 0 and pi and 0 at 90 degrees") {
     // theta = 1e-9 from B = e_z: theta' = -beta |B| sin(theta) cos(theta) ~ -beta |B| 1e-9 (acos would give 0).
     const rigid::SpinField field{Vec3(0, 0, 2), 1.0, 0.5};
     const double th = 1e-9;
