@@ -49,6 +49,9 @@ BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, cons
     todo("euler_poisson_rhs_gaps");
 }
 
+// TODO: (derivation) derive H on paper first; chapter 5's worked example shows where to start.
+double grioli_energy(const Moments& m, double f) { todo("grioli_energy"); }
+
 // TODO: [P, Item II] R_B along k, tilt by theta, turn about b until z(0) = +a, check the rule.
 LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& up, const Vec3& toward) {
     todo("place_item_II");

@@ -52,4 +52,7 @@ GrioliSuspension grioli_suspension(const BodyAtG& body, double L, int sign) { to
 // TODO: the normals of the circular sections of x^T I x = 1 (Grioli's description).
 std::array<Vec3, 2> circular_section_normals(const Mat3& I) { todo("circular_section_normals"); }
 
+// TODO: (derivation) write (z, I' z) with (5.2) and the z of (5.14); it will not depend on L.
+double grioli_line_axial_moment(const BodyAtG& body) { todo("grioli_line_axial_moment"); }
+
 }  // namespace rigid

@@ -31,4 +31,7 @@ Increment strang_step(const HeavyTop& top, const BodyState& s, double h) { todo(
 // TODO: three substeps g1 h, g2 h, g1 h, each from the state reached so far, combined.
 Increment triple_jump(const IncrementStepper& step, const BodyState& s, double h) { todo("triple_jump"); }
 
+// TODO: (derivation) apply one RK4 step to y' = i omega y by hand; |R(i x)|^2 is a polynomial.
+double rk4_energy_loss(double x) { todo("rk4_energy_loss"); }
+
 }  // namespace rigid

@@ -36,6 +36,9 @@ double spin_projection_rate(const SpinField& field, const Vec3& S) { todo("spin_
 // TODO: atan2(|S x B|, S . B), after checking both vectors.
 double spin_angle(const Vec3& B, const Vec3& S) { todo("spin_angle"); }
 
+// TODO: (derivation) differentiate |S| cos(theta) = S . B^ and use what (6.2) does to each side.
+double spin_angle_rate(const SpinField& field, const Vec3& S) { todo("spin_angle_rate"); }
+
 // TODO: turn normalize(S_par + exp(-beta |B| t) S_perp) |S0| about B by -(e/mc) |B| t.
 Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) { todo("spin_exact"); }
 

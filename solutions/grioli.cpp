@@ -115,6 +115,14 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g) {
 
 BodyState grioli_initial_state(const GrioliPrecession& g) { return {grioli_angular_velocity(g, 0.0), Mat3::Identity()}; }
 
+// At t = 0, G is level with O ((k, a) = 0) and Omega = sigma alpha (a + b); since J b = B b and
+// (a, b) = 0, 2H = alpha^2 ((a, J a) + B), and (a, J a) = A a_A^2 + C a_C^2 = A + C - B, so
+// H = alpha^2 (A + C) / 2 = f (A + C) / (2 S), with A + C a sum of positive numbers.
+double grioli_energy(const Moments& m, double f) {
+    require_positive(f, "f = g L mu");
+    return 0.5 * f * ((m.A + m.A) + (m.B_minus_A + m.C_minus_B)) / grioli_root(m);
+}
+
 BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, const Vec3& z0, const BodyState& s) {
     const Vec3& W = s.Omega;
     const Vec3 torque = f * (s.R.transpose() * k).cross(z0);

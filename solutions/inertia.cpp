@@ -270,4 +270,13 @@ std::array<Vec3, 2> circular_section_normals(const Mat3& I) {
     return {cA * uA + cC * uC, cA * uA - cC * uC};
 }
 
+// (z, I' z) = (z, I_G z) + h ((z, z) - (z, z)^2) = A_g z_A^2 + C_g z_C^2 with z_A^2 = (B_g - A_g)/(C_g - A_g)
+// and z_C^2 = (C_g - B_g)/(C_g - A_g): [A_g (B_g - A_g) + C_g (C_g - B_g)] / (C_g - A_g) = A_g + C_g - B_g.
+// The shift drops out because it adds h to every moment about a line through O orthogonal to
+// z and nothing about z itself. Formed as A_g + (C_g - B_g): no cancellation.
+double grioli_line_axial_moment(const BodyAtG& body) {
+    require_body(body);
+    return body.A_g + (body.C_g - body.B_g);
+}
+
 }  // namespace rigid

@@ -82,6 +82,16 @@ double spin_angle(const Vec3& B, const Vec3& S) {
     return std::atan2(S.cross(B).norm(), S.dot(B));
 }
 
+// |S| is constant and d(S . B^)/dt = beta |B| (S . B^) sin^2 theta; with S . B^ = |S| cos theta,
+// -|S| sin(theta) theta' = beta |B| |S| cos(theta) sin^2(theta), so theta' = -beta |B| sin(theta)
+// cos(theta) = -(beta |B| / 2) sin 2 theta. The precession term turns S about B: no change of theta.
+// sin and cos from the unit vectors (a cross and a dot product), accurate at every angle.
+double spin_angle_rate(const SpinField& field, const Vec3& S) {
+    require_spin_field(field);
+    const Vec3 s = require_axis(S, "the spin S"), b = field.B.normalized();
+    return -field.beta * field.B.norm() * s.cross(b).norm() * s.dot(b);
+}
+
 Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) {
     const Vec3 b = require_axis(field.B, "the field B");
     require_spin_field(field);

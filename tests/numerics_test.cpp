@@ -5,9 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "checks.hpp"
+#include "quad_reference.hpp"
 #include "rigid/numerics.hpp"
 
 using rigid::BodyState;
@@ -331,6 +333,47 @@ TEST_CASE("triple_jump: makes the Strang splitting fourth order") {
     CAPTURE(e2);
     CHECK_SMALL(e1, 5e-4);
     CHECK_NEAR(e1 / e2, 16.0, 2.0);
+}
+
+// rk4_energy_loss is a derivation exercise: its closed form is in no contract. The graders take
+// one classical RK4 step of q' = p, p' = -q (omega = 1, h = x) here in binary128 and measure
+// the energy before and after.
+TEST_CASE("rk4_energy_loss: equals 1 - E(h)/E(0) of one RK4 step taken in binary128 down to x = 0.01") {
+    using quadref::quad;
+    for (double x : {0.01, 0.03, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 2.5, 2.7, 3.0}) {
+        for (const auto& [q0, p0] : {std::pair{1.0, 0.0}, {0.3, -0.7}}) {
+            auto f = [](quad q, quad p) { return std::pair<quad, quad>{p, -q}; };
+            const quad h = x, q = q0, p = p0;
+            const auto [a1, b1] = f(q, p);
+            const auto [a2, b2] = f(q + h / 2 * a1, p + h / 2 * b1);
+            const auto [a3, b3] = f(q + h / 2 * a2, p + h / 2 * b2);
+            const auto [a4, b4] = f(q + h * a3, p + h * b3);
+            const quad q1 = q + h / 6 * (a1 + 2 * a2 + 2 * a3 + a4), p1 = p + h / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
+            const quad E0 = (q * q + p * p) / 2, E1 = (q1 * q1 + p1 * p1) / 2;
+            const double loss = (double)(1 - E1 / E0);
+            // The size of the two terms of the loss (x^6/72 and x^8/576): the scale of its rounding.
+            const double scale = std::pow(x, 6) / 72 + std::pow(x, 8) / 576;
+            const double got = rigid::rk4_energy_loss(x);
+            INFO("x = " << x << ": expected " << loss << ", got " << got);
+            CHECK(std::abs(got - loss) <= 32 * std::numeric_limits<double>::epsilon() * scale);
+        }
+    }
+}
+
+TEST_CASE("rk4_energy_loss: keeps its digits at x = 1e-3 and changes sign at x = 2 sqrt(2)") {
+    // At x = 1e-3 the loss is x^6/72 (1 - x^2/8) to 1e-12 relative (the next term is x^8/576):
+    // a value computed as 1 - (energy after a step in double) is 0 or 1e-16, off by 10^4.
+    const double x = 1e-3, lead = std::pow(x, 6) / 72;
+    CHECK(std::abs(rigid::rk4_energy_loss(x) / lead - 1) <= 2e-6);
+    CHECK(std::abs(rigid::rk4_energy_loss(1e-5) / (std::pow(1e-5, 6) / 72) - 1) <= 1e-9);
+    CHECK(rigid::rk4_energy_loss(2.8) > 0);
+    CHECK(rigid::rk4_energy_loss(2.9) < 0);
+    CHECK(std::abs(rigid::rk4_energy_loss(0.0)) == 0.0);
+}
+
+TEST_CASE("rk4_energy_loss: rejects a negative or non-finite x") {
+    for (double x : {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+        CHECK_THROWS_AS((void)rigid::rk4_energy_loss(x), std::invalid_argument);
 }
 
 }  // TEST_SUITE

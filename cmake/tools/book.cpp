@@ -121,7 +121,7 @@ std::vector<std::string> chapter_list(const fs::path& /*root*/) {
 // example, predict-then-run, derivation exercise, Check your work, Going further, Checking [P]).
 // Extend the list as chapters are rewritten; once it holds every chapter, the older rules
 // below apply to none. (--lessons 1,2,... replaces it, for the self-test's small tree.)
-std::set<int> lesson_chapters = {1, 2, 3, 4};
+std::set<int> lesson_chapters = {1, 2, 3, 4, 5, 6, 7, 8};
 
 // The lesson checks of one chapter (see --check-structure above); appends to problems.
 void check_lesson(const fs::path& md, const std::string& name, std::vector<std::string>& problems) {
@@ -239,35 +239,40 @@ int check_structure(const fs::path& root) {
             continue;
         }
         bool in_fence = false, before_first_h2 = true, knows_first = false, errata = false, title = false;
-        bool names_file = false, shows_command = false;  // in the last section
-        std::string last_h2;
+        bool names_file = false, shows_command = false;  // in the Exercises (and Check your work) sections
+        bool has_exercises = false;
+        std::string h2, last_h2;
         for (const auto& l : prose::read_lines(md)) {
+            const bool in_work = h2.rfind("Exercises", 0) == 0 || h2.rfind("Check your work", 0) == 0;
             if (prose::is_fence(l)) {
-                if (!in_fence && l.find("sh") != std::string::npos) shows_command = true;
+                if (!in_fence && in_work && l.find("sh") != std::string::npos) shows_command = true;
                 in_fence = !in_fence;
             }
             if (in_fence) continue;
             if (l.rfind("# ", 0) == 0) title = true;
             if (l.rfind("## ", 0) == 0) {
+                // The new layout opens with a "## Before you start" section instead of the bold line.
+                if (before_first_h2 && l.rfind("## Before you start", 0) == 0) knows_first = true;
                 before_first_h2 = false;
-                last_h2 = l.substr(3);
-                if (last_h2.rfind("Errata", 0) == 0) errata = true;
-                names_file = shows_command = false;
+                h2 = last_h2 = l.substr(3);
+                if (h2.rfind("Errata", 0) == 0) errata = true;
+                if (h2.rfind("Exercises", 0) == 0) has_exercises = true;
             }
-            if (l.find("exercises/") != std::string::npos) names_file = true;
+            if (h2.rfind("Exercises", 0) == 0 && l.find("exercises/") != std::string::npos) names_file = true;
             if (before_first_h2 && l.find("**Before you start.**") != std::string::npos) knows_first = true;
         }
         if (!title) problems.push_back(name + ": no '# Chapter N. Title' heading");
         if (!knows_first)
-            problems.push_back(name + ": does not open with '**Before you start.**' (what the reader should know first), "
-                               "before its first '## ' section");
+            problems.push_back(name + ": does not open with '**Before you start.**' or '## Before you start' (what the reader "
+                               "should know first), before its other '## ' sections");
         if (!errata) problems.push_back(name + ": has no '## Errata' section (say what was checked in [P], even if nothing was wrong)");
-        if (last_h2.rfind("Exercises", 0) != 0) {
-            problems.push_back(name + ": its last section is '## " + last_h2 +
-                               "'; a chapter ends with '## Exercises' (what to implement, where, how to check it)");
+        if (!has_exercises) {
+            problems.push_back(name + ": has no '## Exercises' section (what to implement, where, how to check it); its last "
+                               "section is '## " + last_h2 + "'");
         } else {
             if (!names_file) problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
-            if (!shows_command) problems.push_back(name + ": its Exercises do not show how to check the work (no ```sh block)");
+            if (!shows_command)
+                problems.push_back(name + ": its Exercises or Check your work do not show how to check the work (no ```sh block)");
         }
     }
     // The errata list: each row names its chapter, the place in [P], what [P] prints, what the

@@ -150,4 +150,12 @@ PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, do
                                  int samples_per_period, const OdeSettings& settings);
 // end snippet
 
+// A derivation exercise (Chapter 5, "Exercises"): the total energy of the Theorem 1 precession,
+// H = (Omega, J Omega) / 2 + f (k, R z(0)) with J = diag(A, B, C) (the energy heavy_top_energy
+// computes; the potential is zero when G is level with O), as a closed form in the moments and
+// f alone. Derive it by hand first: the function must not build the precession or integrate
+// anything. The same for both senses. Every digit must survive a nearly symmetric or flat
+// body, as for grioli_root. f finite and > 0 (std::invalid_argument otherwise).
+double grioli_energy(const Moments& m, double f);
+
 }  // namespace rigid

@@ -212,4 +212,10 @@ GrioliSuspension grioli_suspension(const BodyAtG& body, double L, int sign);
 std::array<Vec3, 2> circular_section_normals(const Mat3& I);
 // end snippet
 
+// A derivation exercise (Chapter 6, "Exercises"): the moment of inertia (z, I' z) at a point
+// O = G + L z of a Grioli line (grioli_direction, either sign) about the line OG itself. Show
+// on paper that it does not depend on L or on the sign, and find it in closed form from A_g,
+// B_g, C_g; the function must not build a tensor. Bad bodies throw as require_body says.
+double grioli_line_axial_moment(const BodyAtG& body);
+
 }  // namespace rigid

@@ -147,4 +147,11 @@ double spin_angle(const Vec3& B, const Vec3& S);
 Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t);
 // end snippet
 
+// A derivation exercise (Chapter 8, "Exercises"): the rate d theta/dt at which the angle theta
+// between S and B (spin_angle) changes under (6.2), at the state S. Derive it in closed form on
+// paper, from (6.2) or from the balance of spin_projection_rate; the function must not
+// integrate or difference anything. Accurate near theta = 0 and pi (no acos). Throws
+// std::invalid_argument for a bad field and for a zero or non-finite S (theta is undefined).
+double spin_angle_rate(const SpinField& field, const Vec3& S);
+
 }  // namespace rigid
