@@ -2,6 +2,7 @@
 //
 //   workbook_mutants run --setup <build>/grading --solutions <dir> --out <dir>
 //                        [--topic T]... [--sample N --seed S] [--allow <file>] [-j N] [--timeout s]
+//                        [--build-timeout s]
 //   workbook_mutants list --setup <build>/grading --solutions <dir> [--topic T]... [--sample N --seed S]
 //
 // A mutant is the reference solution solutions/<topic>.cpp with one plausible wrong change, made
@@ -49,7 +50,7 @@ struct Options {
     std::vector<std::string> topics;
     int sample = 0, jobs = 2;
     unsigned seed = 1;
-    double timeout = 10;
+    double timeout = 30, build_timeout = 900;  // generous: a loaded machine must not kill a mutant
 };
 
 [[noreturn]] void die(const std::string& message) {
@@ -404,7 +405,8 @@ void write_submissions(const std::vector<Mutant>& mutants, const fs::path& folde
 int run_grading(const Options& o, const fs::path& submissions, const fs::path& grades) {
     const std::string harness = (fs::path(o.setup) / "workbook_grade").string();
     std::vector<std::string> args = {harness, "grade", "--setup", o.setup, submissions.string(), grades.string(),
-                                     "-j", std::to_string(o.jobs), "--timeout", std::to_string(o.timeout), "--force"};
+                                     "-j", std::to_string(o.jobs), "--timeout", std::to_string(o.timeout),
+                                     "--build-timeout", std::to_string(o.build_timeout), "--force"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -425,7 +427,15 @@ void classify(Mutant& m, const json& result, const std::map<std::string, std::st
         const auto& x = t.at("extra_data");
         if (x.at("topic") != m.topic) continue;
         const std::string verdict = x.at("verdict");
-        if (verdict == "build error") build_error = true;
+        if (verdict == "build error") {
+            const std::string why = t.at("output");
+            // The grading run's own limits, not the mutant: the verdict would be the machine's.
+            if (why.find("took longer than") != std::string::npos || why.find("was killed by") != std::string::npos ||
+                why.find("could not run the") != std::string::npos)
+                die("mutant " + m.id + " could not be built within the limits (" + why +
+                    "): run again on a quieter machine or with a larger --build-timeout");
+            build_error = true;
+        }
         if (verdict != "pass" && (!m.exercise || x.at("exercise") == m.function)) {
             killed = true;
             if (m.evidence.empty()) m.evidence = verdict + ": " + t.at("name").get<std::string>();
@@ -516,7 +526,7 @@ int run(const Options& o) {
 
 Options parse(int argc, char** argv) {
     Options o;
-    if (argc < 2) die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] [--sample N --seed S] [--allow F] [-j N] [--timeout s]");
+    if (argc < 2) die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
     o.command = argv[1];
     if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
     for (int i = 2; i < argc; ++i) {
@@ -541,6 +551,7 @@ Options parse(int argc, char** argv) {
         else if (a == "--seed") o.seed = static_cast<unsigned>(number(0));
         else if (a == "-j") o.jobs = static_cast<int>(number(1));
         else if (a == "--timeout") o.timeout = number(1);
+        else if (a == "--build-timeout") o.build_timeout = number(1);
         else die("unknown option '" + a + "'");
     }
     if (o.setup.empty() || o.solutions.empty()) die("--setup and --solutions are required");
