@@ -493,6 +493,21 @@ TEST_CASE("spin_exact: tan(theta) falls like exp(-beta |B| t); 90 degrees stays;
     }
 }
 
+TEST_CASE("spin_exact: holds for negative t too, where the angle to B opens up (the same closed form)") {
+    // tan(theta) = tan(theta0) exp(-beta |B| t) grows for t < 0; the closed form above is written
+    // independently of the contract's scaled form.
+    const SpinField f{Vec3(0.2, 0.9, -0.4), 0.6, 0.7};
+    const Vec3 b = f.B.normalized();
+    for (double deg : {20.0, 75.0, 130.0}) {
+        const Vec3 S0 = spin_at_angle(b, deg * pi / 180, 1.7);
+        for (double t : {-0.3, -1.0, -4.0}) {
+            CAPTURE(deg);
+            CAPTURE(t);
+            CHECK_MAT_NEAR(rigid::spin_exact(f, S0, t), spin_closed_form(f, S0, t), 1e-13);
+        }
+    }
+}
+
 TEST_CASE("spin_exact: rejects a bad field and a non-finite S0 or t") {
     CHECK_THROWS_AS(rigid::spin_exact({Vec3::Zero(), 1.0, 1.0}, Vec3(1, 0, 0), 1.0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::spin_exact({Vec3(0, 0, 1), 1.0, -1.0}, Vec3(1, 0, 0), 1.0), std::invalid_argument);
