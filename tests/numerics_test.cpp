@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "checks.hpp"
-#include "quad_reference.hpp"
+#include "reference/quad_inertia.hpp"
 #include "rigid/numerics.hpp"
 
 using rigid::BodyState;
