@@ -102,7 +102,7 @@ TEST_CASE("integrate_rk4: rejects a bad step or bad times or a non-finite state"
     CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX{{nan_, 0.0}}, {0.0, 1.0}, ignore, 0.1), std::invalid_argument);
 }
 
-TEST_CASE("integrate_rk4: gives every step its own time (y' = t^3, many steps per output interval)") {
+TEST_CASE("integrate_rk4: gives every step its own time (y' = t^3 with many steps per output interval)") {
     // RK4 on y' = f(t) is Simpson's rule, exact for cubics: y(3) = 1 + 3^4 / 4 whatever the step,
     // provided step j of an interval is evaluated at t_k + j h (a wrong time breaks it at once).
     const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
@@ -113,7 +113,7 @@ TEST_CASE("integrate_rk4: gives every step its own time (y' = t^3, many steps pe
     CHECK_NEAR(seen[2], 1.0 + 81.0 / 4, 1e-13);
 }
 
-TEST_CASE("integrate_rk4: rejects equal or decreasing output times anywhere, a lone non-finite time and an empty state") {
+TEST_CASE("integrate_rk4: rejects equal or decreasing output times anywhere and a lone non-finite time and an empty state") {
     const auto ignore = [](double, const VecX&) {};
     const VecX y0{{1.0, 0.0}};
     CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0, 1.0}, ignore, 0.1), std::invalid_argument);

@@ -493,7 +493,7 @@ TEST_CASE("spin_exact: tan(theta) falls like exp(-beta |B| t); 90 degrees stays;
     }
 }
 
-TEST_CASE("spin_exact: holds for negative t too, where the angle to B opens up (the same closed form)") {
+TEST_CASE("spin_exact: holds for negative t too where the angle to B opens up (the same closed form)") {
     // tan(theta) = tan(theta0) exp(-beta |B| t) grows for t < 0; the closed form above is written
     // independently of the contract's scaled form.
     const SpinField f{Vec3(0.2, 0.9, -0.4), 0.6, 0.7};
