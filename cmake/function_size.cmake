@@ -68,6 +68,10 @@ set(known_long
   # chapters, and the output of `cmake/workbook check` with the hint ladder.
   "cmake/tools/book.cpp: function 'check_structure'"
   "tests/grading/report.cpp: function 'print_check'"
+  # Written by issue 12 in parallel with this check, merged after it: the lesson rules of the
+  # structure check and the hint-ladder reader. To split next (issue 15 stays open for it).
+  "cmake/tools/book.cpp: function 'check_lesson'"
+  "tests/grading/hints.cpp: function 'parse'"
   # Not split yet (issue 15 left them): the snippet checker's two passes over the prose (its
   # check of the scenes' options may change with the scene work of issue 15).
   "cmake/tools/snippets.cpp: function 'snippets_and_values'"

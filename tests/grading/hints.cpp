@@ -38,7 +38,7 @@ const std::map<std::string, std::string>& symbols() {
         {"Theta", "Θ"},   {"Lambda", "Λ"},  {"Pi", "Π"},      {"Sigma", "Σ"},  {"Phi", "Φ"},
         {"Psi", "Ψ"},     {"Omega", "Ω"},   {"cdot", "·"},    {"times", "×"},  {"top", "ᵀ"},
         {"le", "≤"},      {"ge", "≥"},      {"ne", "≠"},      {"approx", "≈"}, {"pm", "±"},
-        {"to", "→"},      {"lVert", "‖"},   {"rVert", "‖"},   {"langle", "⟨"}, {"rangle", "⟩"},
+        {"to", "→"},      {"lVert", "‖"},   {"rVert", "‖"},   {"lvert", "|"},   {"rvert", "|"},   {"langle", "⟨"}, {"rangle", "⟩"},
         {"infty", "∞"},   {"sum", "Σ"},     {"quad", " "},
     };
     return m;
@@ -137,9 +137,9 @@ private:
         std::size_t b = i_;
         while (i_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[i_]))) ++i_;
         const std::string name = s_.substr(b, i_ - b);
-        if (name == "lVert" || name == "langle")  // an opening delimiter: no space after it
+        if (name == "lVert" || name == "lvert" || name == "langle")  // an opening delimiter: no space after it
             while (i_ < s_.size() && s_[i_] == ' ') ++i_;
-        if (name == "rVert" || name == "rangle") return "\x02" + symbols().at(name);  // closing: none before it
+        if (name == "rVert" || name == "rvert" || name == "rangle") return "\x02" + symbols().at(name);  // closing: none before it
         if (const auto it = symbols().find(name); it != symbols().end()) return it->second;
         if (const auto it = functions().find(name); it != functions().end()) return "\x03" + it->second + "\x01";
         if (name == "mathbf" || name == "boldsymbol" || name == "mathrm") return argument();

@@ -4,6 +4,7 @@
 // expect: rotation_about: turns counter-clockwise | fail | expected
 // expect: rotation_about: normalises an axis | fail | expected
 // expect: rotation_about: rejects | fail | expected
+// expect: rotation_about: the quarter turn about e3 | fail | expected
 // score: body_angular_velocity 1
 namespace rigid {
 Mat3 rotation_about(const Vec3& a, double phi) {
