@@ -39,6 +39,8 @@ inline BodyAtG body(const kit::Options& o) {
 
 // The yardstick the graders use too (solutions/reference/inertia.hpp): the tensor from (5.2)
 // written out, Eigen's eigen-solver with the moments named as in (5.3), the body's size.
+using inertia_reference::Crossing;
+using inertia_reference::crossing_by_bisection;
 using inertia_reference::eigen_moments;
 using inertia_reference::EigenMoments;
 using inertia_reference::size_of;

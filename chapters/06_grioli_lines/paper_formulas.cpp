@@ -122,14 +122,8 @@ int main(int argc, char** argv) {
             const BodyAtG b = random_body();
             const double c2 = rigid::critical_cos2(b) * uniform(0.01, 0.99);
             const Vec3 z(std::sqrt(c2), 0, std::sqrt(1 - c2));
-            auto g = [&](double h) {
-                const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-                return e.C - e.B;
-            };
-            double lo = 0, hi = b.C_g;
-            while (g(hi) > 0) hi *= 2;
-            for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-            e58 = std::max(e58, std::abs(printed(b, 1.0, z).h_crit_58() - 0.5 * (lo + hi)) / hi);
+            const Crossing x = crossing_by_bisection(b, z);
+            e58 = std::max(e58, std::abs(printed(b, 1.0, z).h_crit_58() - x.h()) / x.hi);
             // (5.14)/(5.15) against Grioli: the plane orthogonal to the line cuts x^T I_G x = 1 in a circle.
             for (int s : {1, -1}) {
                 const double zA = std::sqrt((b.B_g - b.A_g) / (b.C_g - b.A_g));          // (5.14)

@@ -33,14 +33,7 @@ int main(int argc, char** argv) {
         for (int i = 0; i < lines; ++i) {
             const double c2 = crit * (i + 0.5) / lines;  // cos^2 phi_g in (0, crit)
             const Vec3 z(std::sqrt(c2), 0, (i % 2 ? -1 : 1) * std::sqrt(1 - c2));
-            auto g = [&](double h) {
-                const EigenMoments e = eigen_moments(tensor_at(b, std::sqrt(h / b.mu), z));
-                return e.C - e.B;
-            };
-            double lo = 0, hi = b.C_g;
-            while (g(hi) > 0) hi *= 2;
-            for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-            const double h = 0.5 * (lo + hi), L = std::sqrt(h / b.mu);
+            const double h = crossing_by_bisection(b, z).h(), L = std::sqrt(h / b.mu);
             err_hyperbola = std::max(err_hyperbola, std::abs(rigid::hyperbola_lhs(b, L * z.x(), L * z.z()) - 1));
             err_hcrit = std::max(err_hcrit, std::abs(rigid::critical_h(b, z) - h) / h);
             err_hcrit_printed = std::max(err_hcrit_printed, std::abs(printed(b, L, z).h_crit_58() - h) / h);
