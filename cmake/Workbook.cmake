@@ -478,7 +478,7 @@ function(workbook_book)
            COMMAND snippets --check "${root}")
   add_test(NAME "book: the code the prose names exists"
            COMMAND snippets --check-names "${root}")
-  add_test(NAME "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
+  add_test(NAME "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
            COMMAND book_tool --check-structure "${root}" --contents "${contents}")
   add_test(NAME "book: every number in the prose is its run's committed value, and the scenes still report it"
            COMMAND snippets --check-values "${root}" "${runs}" "${CMAKE_BINARY_DIR}/smoke/reports")
@@ -499,7 +499,7 @@ function(workbook_book)
   set_tests_properties(
     "book: every code snippet in the prose matches its source"
     "book: the code the prose names exists"
-    "book: every chapter says what to know first and ends with its exercises, every erratum gives numbers"
+    "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
     "book: every number in the prose is its run's committed value, and the scenes still report it"
     "book: renders to HTML with MathML, its figures and no broken link"
     "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"

@@ -47,195 +47,221 @@ enum class Mode { check, check_values, update, diff };
 //   runs:  the declared runs (check_values, update with values, diff)
 //   smoke: the test suite's reports (check_values; may be null)
 //   tree:  a build's figures (diff)
-int snippets_and_values(const fs::path& root, Mode mode, const prose::Runs* runs, const fs::path* smoke,
-                        const fs::path* tree) {
-    const bool update = mode == Mode::update;
-    std::vector<std::string> problems;
-    const auto tree_files = prose::scan_tree(root);
-    auto snippets = prose::collect_snippets(root, tree_files.sources, problems);
-    prose::Reports committed(root / "figures");
-    std::optional<prose::Reports> other;
-    if (tree) other.emplace(*tree);
+class ProseChecker {
+public:
+    ProseChecker(const fs::path& root, Mode mode, const prose::Runs* runs, const fs::path* smoke, const fs::path* tree)
+        : root_(root), mode_(mode), runs_(runs), smoke_(smoke), tree_files_(prose::scan_tree(root)),
+          snippets_(prose::collect_snippets(root, tree_files_.sources, problems_)), committed_(root / "figures") {
+        if (tree) other_.emplace(*tree);
+        for (const auto& p : tree_files_.sources)  // a scene is chapters/*/<scene>.cpp
+            if (rel(p, root).rfind("chapters/", 0) == 0 && p.extension() == ".cpp") scenes_.insert(p.stem().string());
+    }
 
-    std::set<std::string> scenes;  // a scene is chapters/*/<scene>.cpp
-    for (const auto& p : tree_files.sources)
-        if (rel(p, root).rfind("chapters/", 0) == 0 && p.extension() == ".cpp") scenes.insert(p.stem().string());
+    int run() {
+        for (const auto& p : tree_files_.prose)
+            if (fs::exists(p)) file(p);
+        if (mode_ == Mode::check)
+            for (const auto& [name, s] : snippets_)
+                if (!s.used)
+                    problems_.push_back(s.file + ":" + std::to_string(s.line) + ": snippet '" + name +
+                                        "' is not quoted anywhere in the prose");
+        if (mode_ == Mode::diff) print_diff();
+        else print_summary();
+        for (const auto& p : problems_) std::cout << "  " << p << "\n";
+        return problems_.empty() ? 0 : 1;
+    }
 
-    // A smoke report: <smoke>/<scene>.json, read once.
-    std::map<std::string, std::unique_ptr<prose::Json>> smoke_reports;
-    auto smoke_report = [&](const std::string& scene) -> const prose::Json* {
-        if (!smoke) return nullptr;
-        auto it = smoke_reports.find(scene);
-        if (it != smoke_reports.end()) return it->second.get();
-        std::unique_ptr<prose::Json> j;
-        const fs::path p = *smoke / (scene + ".json");
-        if (fs::exists(p)) j = std::make_unique<prose::Json>(prose::read_json(p));
-        return (smoke_reports[scene] = std::move(j)).get();
-    };
-
-    int quoted = 0, stale = 0, n_values = 0, refreshed = 0;
+private:
     struct Tally {
         int values = 0, same = 0, differ = 0, missing = 0;
     };
-    std::map<std::string, Tally> tally;  // diff: per prose file
-    std::vector<std::string> differences;
-    for (const auto& p : tree_files.prose) {
-        if (!fs::exists(p)) continue;
+
+    // One prose file: its value markers and its quotations, rewritten in place by --update.
+    void file(const fs::path& p) {
         const auto lines = prose::read_lines(p);
         std::vector<std::string> out;
         bool changed = false, in_fence = false;
         for (std::size_t i = 0; i < lines.size(); ++i) {
-            std::smatch m;
-            const std::string where = rel(p, root) + ":" + std::to_string(i + 1);
+            const std::string where = rel(p, root_) + ":" + std::to_string(i + 1);
             if (prose::is_fence(lines[i])) in_fence = !in_fence;
             if (in_fence || prose::is_fence(lines[i])) {
                 out.push_back(lines[i]);
                 continue;
             }
-            // Value markers, inline.
             std::string line = lines[i];
             auto markers = prose::find_value_markers(line);
-            for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
-                ++n_values;
-                const std::string at = where + ": value '" + v->path + "'";
-                if (!v->error.empty()) {
-                    problems.push_back(at + ": " + v->error);
-                    continue;
-                }
-                const std::string scene = v->scene();
-                if (!scenes.count(scene)) {
-                    problems.push_back(at + ": there is no scene '" + scene + "' (chapters/*/" + scene + ".cpp)");
-                    continue;
-                }
-                if (!runs) continue;
-                const prose::RunDecl* d = runs->find(scene, v->run);
-                if (!d) {
-                    problems.push_back(at + ": the scene " + scene + " has no run '" + v->run + "' (declared: " +
-                                       runs->names(scene) + ")");
-                    continue;
-                }
-                try {
-                    if (mode == Mode::diff) {
-                        auto& t = tally[rel(p, root)];
-                        ++t.values;
-                        const prose::Json* r = other->report(*d);
-                        if (!r) {
-                            ++t.missing;
-                            differences.push_back(at + " (" + v->run + "): no report in " + other->tree().string());
-                            continue;
-                        }
-                        const std::string text = prose::resolve(*v, *r);
-                        if (text == v->text) {
-                            ++t.same;
-                        } else {
-                            ++t.differ;
-                            differences.push_back(at + " (" + v->run + "): text " + v->text + ", this run " + text);
-                        }
-                        continue;
-                    }
-                    if (mode == Mode::check_values) {
-                        if (const prose::Json* s = smoke_report(scene)) {
-                            try {
-                                prose::lookup(*s, v->path.substr(v->path.find_first_of(".[")));
-                            } catch (const std::exception& e) {
-                                problems.push_back(at + ": the scene as built no longer reports it (its test run: " +
-                                                   e.what() + ")");
-                            }
-                        }
-                    }
-                    const prose::Json* r = committed.report(*d);
-                    if (!r) {
-                        problems.push_back(at + ": no committed report " + rel(prose::report_path(root / "figures", *d), root) +
-                                           " (run cmake/workbook run, then the target update-figures)");
-                        continue;
-                    }
-                    const std::string text = prose::resolve(*v, *r);
-                    if (text == v->text) continue;
-                    if (update) {
-                        line.replace(v->text_begin, v->text_end - v->text_begin, text);
-                        ++refreshed;
-                        changed = true;
-                    } else {
-                        problems.push_back(at + ": the text says '" + v->text + "', its committed report " +
-                                           rel(prose::report_path(root / "figures", *d), root) + " says '" + text +
-                                           "' (run the target update-snippets)");
-                    }
-                } catch (const std::exception& e) {
-                    problems.push_back(at + ": " + e.what());
-                }
-            }
+            for (auto v = markers.rbegin(); v != markers.rend(); ++v) changed |= value(*v, rel(p, root_), where, line);
             out.push_back(line);
-            // A quotation of a code snippet: whole lines.
-            if (!std::regex_match(lines[i], m, prose::snippet_use_marker())) continue;
-            const std::string name = m[1];
-            std::size_t j = i + 1;
-            while (j < lines.size() && !std::regex_match(lines[j], prose::snippet_use_end())) ++j;
-            if (j == lines.size()) {
-                problems.push_back(where + ": '<!-- snippet: " + name + " -->' has no '<!-- end snippet -->'");
-                continue;
-            }
-            std::string current;
-            for (std::size_t k = i + 1; k < j; ++k) current += lines[k] + "\n";
-            const auto s = snippets.find(name);
-            if (s == snippets.end()) {
-                problems.push_back(where + ": no source defines snippet '" + name + "' (code removed or renamed?)");
-                for (std::size_t k = i + 1; k <= j; ++k) out.push_back(lines[k]);
-                i = j;
-                continue;
-            }
-            s->second.used = true;
-            ++quoted;
-            const std::string wanted = "```cpp\n" + s->second.text + "```\n";
-            if (current != wanted) {
-                ++stale;
-                if (update) changed = true;
-                else if (mode == Mode::check)
-                    problems.push_back(where + ": snippet '" + name + "' differs from " + s->second.file + ":" +
-                                       std::to_string(s->second.line) +
-                                       " (run: cmake --build <build> --target update-snippets)");
-            }
-            std::istringstream w(update ? wanted : current);
-            for (std::string l; std::getline(w, l);) out.push_back(l);
-            out.push_back(lines[j]);
-            i = j;
+            std::smatch m;
+            if (std::regex_match(lines[i], m, prose::snippet_use_marker())) i = quote(m[1], lines, i, where, out, changed);
         }
-        if (update && changed) {
+        if (mode_ == Mode::update && changed) {
             std::string text;
             for (const auto& l : out) text += l + "\n";
             prose::write_text(p, text);
-            std::cout << "updated " << rel(p, root) << "\n";
+            std::cout << "updated " << rel(p, root_) << "\n";
         }
     }
-    if (mode == Mode::check)
-        for (const auto& [name, s] : snippets)
-            if (!s.used) problems.push_back(s.file + ":" + std::to_string(s.line) + ": snippet '" + name + "' is not quoted anywhere in the prose");
 
-    if (mode == Mode::diff) {
+    // One value marker: checked against its run's committed report (refreshed by --update), or
+    // compared with another build's report (--diff). Returns whether `line` changed.
+    bool value(const prose::ValueMarker& v, const std::string& file, const std::string& where, std::string& line) {
+        ++n_values_;
+        const std::string at = where + ": value '" + v.path + "'";
+        if (!v.error.empty()) return problem(at + ": " + v.error);
+        const std::string scene = v.scene();
+        if (!scenes_.count(scene)) return problem(at + ": there is no scene '" + scene + "' (chapters/*/" + scene + ".cpp)");
+        if (!runs_) return false;
+        const prose::RunDecl* d = runs_->find(scene, v.run);
+        if (!d)
+            return problem(at + ": the scene " + scene + " has no run '" + v.run + "' (declared: " + runs_->names(scene) + ")");
+        try {
+            if (mode_ == Mode::diff) return diff(v, *d, file, at);
+            if (mode_ == Mode::check_values) still_reported(v, scene, at);
+            const prose::Json* r = committed_.report(*d);
+            const std::string report = rel(prose::report_path(root_ / "figures", *d), root_);
+            if (!r) return problem(at + ": no committed report " + report + " (run cmake/workbook run, then the target update-figures)");
+            const std::string text = prose::resolve(v, *r);
+            if (text == v.text) return false;
+            if (mode_ != Mode::update)
+                return problem(at + ": the text says '" + v.text + "', its committed report " + report + " says '" + text +
+                               "' (run the target update-snippets)");
+            line.replace(v.text_begin, v.text_end - v.text_begin, text);
+            ++refreshed_;
+            return true;
+        } catch (const std::exception& e) {
+            return problem(at + ": " + e.what());
+        }
+    }
+
+    // --diff: the marker's text against the report of the same run in the other tree.
+    bool diff(const prose::ValueMarker& v, const prose::RunDecl& d, const std::string& file, const std::string& at) {
+        auto& t = tally_[file];
+        ++t.values;
+        const prose::Json* r = other_->report(d);
+        if (!r) {
+            ++t.missing;
+            differences_.push_back(at + " (" + v.run + "): no report in " + other_->tree().string());
+            return false;
+        }
+        const std::string text = prose::resolve(v, *r);
+        if (text == v.text) {
+            ++t.same;
+        } else {
+            ++t.differ;
+            differences_.push_back(at + " (" + v.run + "): text " + v.text + ", this run " + text);
+        }
+        return false;
+    }
+
+    // --check-values with the test suite's reports: the scene as built still reports the key.
+    void still_reported(const prose::ValueMarker& v, const std::string& scene, const std::string& at) {
+        const prose::Json* s = smoke_report(scene);
+        if (!s) return;
+        try {
+            prose::lookup(*s, v.path.substr(v.path.find_first_of(".[")));
+        } catch (const std::exception& e) {
+            problem(at + ": the scene as built no longer reports it (its test run: " + e.what() + ")");
+        }
+    }
+
+    // A smoke report: <smoke>/<scene>.json, read once.
+    const prose::Json* smoke_report(const std::string& scene) {
+        if (!smoke_) return nullptr;
+        auto it = smoke_reports_.find(scene);
+        if (it != smoke_reports_.end()) return it->second.get();
+        std::unique_ptr<prose::Json> j;
+        const fs::path p = *smoke_ / (scene + ".json");
+        if (fs::exists(p)) j = std::make_unique<prose::Json>(prose::read_json(p));
+        return (smoke_reports_[scene] = std::move(j)).get();
+    }
+
+    // A quotation of the code snippet `name` (whole lines, from line i to its end marker): checked
+    // against the source, or rewritten by --update. Returns the index of the end marker's line.
+    std::size_t quote(const std::string& name, const std::vector<std::string>& lines, std::size_t i,
+                      const std::string& where, std::vector<std::string>& out, bool& changed) {
+        std::size_t j = i + 1;
+        while (j < lines.size() && !std::regex_match(lines[j], prose::snippet_use_end())) ++j;
+        if (j == lines.size()) {
+            problem(where + ": '<!-- snippet: " + name + " -->' has no '<!-- end snippet -->'");
+            return i;
+        }
+        std::string current;
+        for (std::size_t k = i + 1; k < j; ++k) current += lines[k] + "\n";
+        const auto s = snippets_.find(name);
+        if (s == snippets_.end()) {
+            problem(where + ": no source defines snippet '" + name + "' (code removed or renamed?)");
+            for (std::size_t k = i + 1; k <= j; ++k) out.push_back(lines[k]);
+            return j;
+        }
+        s->second.used = true;
+        ++quoted_;
+        const std::string wanted = "```cpp\n" + s->second.text + "```\n";
+        const bool update = mode_ == Mode::update;
+        if (current != wanted) {
+            ++stale_;
+            if (update) changed = true;
+            else if (mode_ == Mode::check)
+                problem(where + ": snippet '" + name + "' differs from " + s->second.file + ":" +
+                        std::to_string(s->second.line) + " (run: cmake --build <build> --target update-snippets)");
+        }
+        std::istringstream w(update ? wanted : current);
+        for (std::string l; std::getline(w, l);) out.push_back(l);
+        out.push_back(lines[j]);
+        return j;
+    }
+
+    bool problem(const std::string& what) {
+        problems_.push_back(what);
+        return false;
+    }
+
+    void print_diff() const {
         Tally all;
-        std::cout << "The value markers against the reports in " << tree->string() << ":\n";
-        for (const auto& [file, t] : tally) {
+        std::cout << "The value markers against the reports in " << other_->tree().string() << ":\n";
+        for (const auto& [file, t] : tally_) {
             std::cout << "  " << file << ": " << t.values << " values, " << t.same << " as in the text, " << t.differ
                       << " different, " << t.missing << " without a report\n";
             all.values += t.values, all.same += t.same, all.differ += t.differ, all.missing += t.missing;
         }
         std::cout << "  all: " << all.values << " values, " << all.same << " as in the text, " << all.differ
                   << " different, " << all.missing << " without a report\n";
-        for (const auto& d : differences) std::cout << "  " << d << "\n";
-        for (const auto& p : problems) std::cout << "  " << p << "\n";
-        return problems.empty() ? 0 : 1;
+        for (const auto& d : differences_) std::cout << "  " << d << "\n";
     }
-    std::cout << snippets.size() << " snippets in the sources, " << quoted << " quotations in the prose";
-    if (update) std::cout << ", " << stale << " refreshed";
-    std::cout << "; " << n_values << " value markers";
-    if (runs) {
-        std::cout << " (committed reports in " << (root / "figures").string() << ")";
-        if (update) std::cout << ", " << refreshed << " refreshed";
-    } else if (update) {
-        std::cout << " (not refreshed: no list of runs given)";
+
+    void print_summary() const {
+        const bool update = mode_ == Mode::update;
+        std::cout << snippets_.size() << " snippets in the sources, " << quoted_ << " quotations in the prose";
+        if (update) std::cout << ", " << stale_ << " refreshed";
+        std::cout << "; " << n_values_ << " value markers";
+        if (runs_) {
+            std::cout << " (committed reports in " << (root_ / "figures").string() << ")";
+            if (update) std::cout << ", " << refreshed_ << " refreshed";
+        } else if (update) {
+            std::cout << " (not refreshed: no list of runs given)";
+        }
+        std::cout << "\n";
     }
-    std::cout << "\n";
-    for (const auto& p : problems) std::cout << "  " << p << "\n";
-    return problems.empty() ? 0 : 1;
+
+    fs::path root_;
+    Mode mode_;
+    const prose::Runs* runs_;
+    const fs::path* smoke_;
+    std::vector<std::string> problems_;
+    prose::Tree tree_files_;
+    std::map<std::string, prose::Snippet> snippets_;
+    prose::Reports committed_;
+    std::optional<prose::Reports> other_;
+    std::set<std::string> scenes_;
+    std::map<std::string, std::unique_ptr<prose::Json>> smoke_reports_;
+    int quoted_ = 0, stale_ = 0, n_values_ = 0, refreshed_ = 0;
+    std::map<std::string, Tally> tally_;  // diff: per prose file
+    std::vector<std::string> differences_;
+};
+
+int snippets_and_values(const fs::path& root, Mode mode, const prose::Runs* runs, const fs::path* smoke,
+                        const fs::path* tree) {
+    return ProseChecker(root, mode, runs, smoke, tree).run();
 }
 
 // ------------------------------------------------------------------ names of code in the prose
@@ -280,107 +306,123 @@ bool is_library_name(const std::string& t) {
     return false;
 }
 
-int check_names(const fs::path& root) {
-    const auto tree = prose::scan_tree(root);
-    const Corpus corpus = read_corpus(root);
-    std::vector<std::string> problems;
-    const std::regex identifier(R"([A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*)");
-    const std::regex path_like(R"([A-Za-z0-9_.][A-Za-z0-9_./-]*/[A-Za-z0-9_./-]*)");
-    const std::regex source_ext(R"(.*\.(cpp|hpp|md|cmake|gp|txt|json|svg|png)$)");
-    const std::regex span(R"(`([^`]+)`)");
-    const std::regex scene_cmd(R"(build/[^/ ]+/scenes/([A-Za-z0-9_]+)((?: +[^ ]+)*))");
-    const std::regex grader_cmd(R"(build/[^/ ]+/graders/grade_([A-Za-z0-9_]+))");
-    const std::set<std::string> common_options = {"help", "json", "out", "no-figure", "budget", "list-options"};
-    int names = 0, commands = 0;
+// Prose that names code which does not exist: identifiers and paths in `code spans`, and the
+// scene and grader commands of ```sh blocks.
+class NameChecker {
+public:
+    explicit NameChecker(const fs::path& root) : root_(root), corpus_(read_corpus(root)) {}
 
-    for (const auto& p : tree.prose) {
-        if (!fs::exists(p)) continue;
+    int run() {
+        for (const auto& p : prose::scan_tree(root_).prose)
+            if (fs::exists(p)) file(p);
+        std::cout << names_ << " names of code and " << commands_ << " commands in the prose checked against the sources\n";
+        for (const auto& p : problems_) std::cout << "  " << p << "\n";
+        return problems_.empty() ? 0 : 1;
+    }
+
+private:
+    void file(const fs::path& p) {
         const auto lines = prose::read_lines(p);
-        const fs::path dir = p.parent_path();
         bool in_fence = false;
         std::string fence_lang;
         for (std::size_t i = 0; i < lines.size(); ++i) {
             const std::string& line = lines[i];
-            const std::string where = rel(p, root) + ":" + std::to_string(i + 1);
+            const std::string where = rel(p, root_) + ":" + std::to_string(i + 1);
             if (prose::is_fence(line)) {
                 in_fence = !in_fence;
                 fence_lang = in_fence ? line.substr(line.find_first_not_of(" `~")) : "";
-                continue;
-            }
-            if (in_fence) {
-                if (fence_lang != "sh" && fence_lang != "bash") continue;
-                std::smatch m;
-                if (std::regex_search(line, m, scene_cmd)) {
-                    ++commands;
-                    const auto src = corpus.scene_sources.find(m[1]);
-                    if (src == corpus.scene_sources.end()) {
-                        problems.push_back(where + ": runs the scene '" + m[1].str() + "', but no chapters/*/" + m[1].str() + ".cpp exists");
-                    } else {
-                        // The scene's own source, and the headers of its chapter folder (a
-                        // chapter may declare shared options in a common header).
-                        std::string text = prose::read_text(src->second);
-                        for (const auto& e : fs::directory_iterator(fs::path(src->second).parent_path()))
-                            if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
-                        std::istringstream args(m[2].str());
-                        for (std::string a; args >> a;) {
-                            if (a.rfind("--", 0) != 0) continue;
-                            const std::string opt = a.substr(2, a.find('=') == std::string::npos ? std::string::npos : a.find('=') - 2);
-                            if (!common_options.count(opt) && text.find("\"" + opt + "\"") == std::string::npos)
-                                problems.push_back(where + ": the scene " + m[1].str() + " has no option --" + opt);
-                        }
-                    }
-                }
-                if (std::regex_search(line, m, grader_cmd)) {
-                    ++commands;
-                    if (!fs::exists(root / "tests" / (m[1].str() + "_test.cpp")))
-                        problems.push_back(where + ": runs grade_" + m[1].str() + ", but tests/" + m[1].str() + "_test.cpp does not exist");
-                }
-                continue;
-            }
-            for (auto it = std::sregex_iterator(line.begin(), line.end(), span); it != std::sregex_iterator(); ++it) {
-                std::string t = (*it)[1];
-                while (!t.empty() && t.back() == ' ') t.pop_back();
-                while (!t.empty() && t.front() == ' ') t.erase(0, 1);
-                const bool prefix = !t.empty() && t.back() == ':';
-                if (prefix) t.pop_back();
-                if (t.size() > 2 && t.compare(t.size() - 2, 2, "()") == 0) t.resize(t.size() - 2);
-                if (std::regex_match(t, identifier)) {
-                    if (prefix) {
-                        ++names;
-                        if (!corpus.test_prefixes.count(t))
-                            problems.push_back(where + ": no grader's test name starts with '" + t + ":'");
-                    } else if (is_library_name(t)) {
-                        continue;  // std::, Eigen::, GSL's gsl_...: not this workbook's code
-                    } else if (t.find('_') != std::string::npos || t.find("::") != std::string::npos) {
-                        ++names;
-                        const std::string last = t.substr(t.rfind(':') == std::string::npos ? 0 : t.rfind(':') + 1);
-                        if (!corpus.words.count(last))
-                            problems.push_back(where + ": `" + t + "` does not occur in the code (renamed or removed?)");
-                    }
-                    continue;
-                }
-                // A path in the tree; build outputs and placeholders (NN_, <x>, *) are not checked.
-                if (!std::regex_match(t, path_like) || t.rfind("build/", 0) == 0 || t.find("NN") != std::string::npos)
-                    continue;
-                if (t.back() != '/' && !std::regex_match(t, source_ext)) continue;
-                ++names;
-                bool found = false;
-                // Relative to the root, the prose's folder, or a top-level folder (`kit/` in a
-                // table row about chapters/; `rigid/rotation.hpp` and `rigid/ode.hpp` as they are #included).
-                std::vector<fs::path> bases{root, dir};
-                for (const auto& e : fs::directory_iterator(root))
-                    if (e.is_directory()) bases.push_back(e.path());
-                bases.push_back(root / "chapters" / "kit");
-                bases.push_back(root / "exercises" / "provided");
-                for (const auto& base : bases) found = found || fs::exists(base / t);
-                if (!found) problems.push_back(where + ": `" + t + "` does not exist");
+            } else if (in_fence) {
+                if (fence_lang == "sh" || fence_lang == "bash") command(line, where);
+            } else {
+                static const std::regex span(R"(`([^`]+)`)");
+                for (auto it = std::sregex_iterator(line.begin(), line.end(), span); it != std::sregex_iterator(); ++it)
+                    code_span((*it)[1], where, p.parent_path());
             }
         }
     }
-    std::cout << names << " names of code and " << commands << " commands in the prose checked against the sources\n";
-    for (const auto& p : problems) std::cout << "  " << p << "\n";
-    return problems.empty() ? 0 : 1;
-}
+
+    // A shell line: a scene run with its options, or a grader run.
+    void command(const std::string& line, const std::string& where) {
+        static const std::regex scene_cmd(R"(build/[^/ ]+/scenes/([A-Za-z0-9_]+)((?: +[^ ]+)*))");
+        static const std::regex grader_cmd(R"(build/[^/ ]+/graders/grade_([A-Za-z0-9_]+))");
+        std::smatch m;
+        if (std::regex_search(line, m, scene_cmd)) {
+            ++commands_;
+            scene_options(m[1], m[2], where);
+        }
+        if (std::regex_search(line, m, grader_cmd)) {
+            ++commands_;
+            if (!fs::exists(root_ / "tests" / (m[1].str() + "_test.cpp")))
+                problems_.push_back(where + ": runs grade_" + m[1].str() + ", but tests/" + m[1].str() +
+                                    "_test.cpp does not exist");
+        }
+    }
+
+    // The scene exists, and every --option given to it is one it declares: in its own source or
+    // in a header of its chapter folder (a chapter may declare shared options in a common header).
+    void scene_options(const std::string& scene, const std::string& args_text, const std::string& where) {
+        static const std::set<std::string> common = {"help", "json", "out", "no-figure", "budget", "list-options"};
+        const auto src = corpus_.scene_sources.find(scene);
+        if (src == corpus_.scene_sources.end()) {
+            problems_.push_back(where + ": runs the scene '" + scene + "', but no chapters/*/" + scene + ".cpp exists");
+            return;
+        }
+        std::string text = prose::read_text(src->second);
+        for (const auto& e : fs::directory_iterator(fs::path(src->second).parent_path()))
+            if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
+        std::istringstream args(args_text);
+        for (std::string a; args >> a;) {
+            if (a.rfind("--", 0) != 0) continue;
+            const std::string opt = a.substr(2, a.find('=') == std::string::npos ? std::string::npos : a.find('=') - 2);
+            if (!common.count(opt) && text.find("\"" + opt + "\"") == std::string::npos)
+                problems_.push_back(where + ": the scene " + scene + " has no option --" + opt);
+        }
+    }
+
+    // `name`, `name()`, `prefix:` (a grader's test name) or `a/path`.
+    void code_span(std::string t, const std::string& where, const fs::path& dir) {
+        static const std::regex identifier(R"([A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*)");
+        while (!t.empty() && t.back() == ' ') t.pop_back();
+        while (!t.empty() && t.front() == ' ') t.erase(0, 1);
+        const bool prefix = !t.empty() && t.back() == ':';
+        if (prefix) t.pop_back();
+        if (t.size() > 2 && t.compare(t.size() - 2, 2, "()") == 0) t.resize(t.size() - 2);
+        if (!std::regex_match(t, identifier)) return path(t, where, dir);
+        if (prefix) {
+            ++names_;
+            if (!corpus_.test_prefixes.count(t)) problems_.push_back(where + ": no grader's test name starts with '" + t + ":'");
+        } else if (!is_library_name(t) && (t.find('_') != std::string::npos || t.find("::") != std::string::npos)) {
+            ++names_;  // std::, Eigen::, GSL's gsl_... are not this workbook's code
+            const std::string last = t.substr(t.rfind(':') == std::string::npos ? 0 : t.rfind(':') + 1);
+            if (!corpus_.words.count(last))
+                problems_.push_back(where + ": `" + t + "` does not occur in the code (renamed or removed?)");
+        }
+    }
+
+    // A path in the tree; build outputs and placeholders (NN_, <x>, *) are not checked. Relative
+    // to the root, the prose's folder, or a top-level folder (`kit/` in a table row about
+    // chapters/; `rigid/rotation.hpp` and `rigid/ode.hpp` as they are #included).
+    void path(const std::string& t, const std::string& where, const fs::path& dir) {
+        static const std::regex path_like(R"([A-Za-z0-9_.][A-Za-z0-9_./-]*/[A-Za-z0-9_./-]*)");
+        static const std::regex source_ext(R"(.*\.(cpp|hpp|md|cmake|gp|txt|json|svg|png)$)");
+        if (!std::regex_match(t, path_like) || t.rfind("build/", 0) == 0 || t.find("NN") != std::string::npos) return;
+        if (t.back() != '/' && !std::regex_match(t, source_ext)) return;
+        ++names_;
+        std::vector<fs::path> bases{root_, dir, root_ / "chapters" / "kit", root_ / "exercises" / "provided"};
+        for (const auto& e : fs::directory_iterator(root_))
+            if (e.is_directory()) bases.push_back(e.path());
+        for (const auto& base : bases)
+            if (fs::exists(base / t)) return;
+        problems_.push_back(where + ": `" + t + "` does not exist");
+    }
+
+    fs::path root_;
+    Corpus corpus_;
+    std::vector<std::string> problems_;
+    int names_ = 0, commands_ = 0;
+};
+
+int check_names(const fs::path& root) { return NameChecker(root).run(); }
 
 int usage() {
     std::cerr << "usage: snippets --check <root> | --check-names <root> | --check-values <root> <runs.txt> [<smoke>]\n"

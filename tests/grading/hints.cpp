@@ -247,71 +247,108 @@ void segments(const std::string& line, F f) {
 }  // namespace
 
 // ---- the reader ---------------------------------------------------------------------------------
-Hints parse(const std::string& text, const std::string& file_name) {
-    Hints h;
-    const auto lines = lines_of(text);
-    Ladder* current = nullptr;
-    bool fence = false;
-    auto problem = [&](std::size_t n, const std::string& what) {
-        h.error = file_name + ":" + std::to_string(n + 1) + ": " + what;
-        return h;
-    };
-    auto close = [&](std::size_t n) -> std::string {
-        if (!current) return "";
-        if (current->levels.size() < 2)
-            return file_name + ":" + std::to_string(n + 1) + ": the hints of '" + current->exercise + "' have " +
-                   std::to_string(current->levels.size()) +
-                   " level(s); a ladder has 2 or 3 (#### Hint 1, #### Hint 2, optionally #### Hint 3)";
-        for (std::size_t k = 0; k < current->levels.size(); ++k)
-            if (trim(current->levels[k]).empty())
-                return file_name + ":" + std::to_string(current->line) + ": Hint " + std::to_string(k + 1) + " of '" +
-                       current->exercise + "' is empty";
-        return "";
-    };
-    for (std::size_t n = 0; n < lines.size(); ++n) {
-        const std::string& line = lines[n];
-        if (starts_with(trim(line), "```")) fence = !fence;
-        const bool heading = !fence && starts_with(line, "#");
-        if (heading && (starts_with(line, "# ") || starts_with(line, "## ") || starts_with(line, "### "))) {
-            if (const auto e = close(n); !e.empty()) return h.error = e, h;
-            current = nullptr;
-            if (!starts_with(line, "### ")) continue;
-            const std::string name = trim(line.substr(4));
-            if (!std::regex_match(name, std::regex("[A-Za-z_][A-Za-z0-9_]*")))
-                return problem(n, "'### " + name + "' is not an exercise name (one identifier, as in exercises/rigid/*.hpp)");
-            if (find(h, name)) return problem(n, "'" + name + "' has a second ### section");
-            h.ladders.push_back({name, static_cast<int>(n + 1), {}});
-            current = &h.ladders.back();
-            continue;
-        }
-        if (heading && starts_with(line, "####")) {
-            std::smatch m;
-            const std::string t = trim(line);
-            if (!current) return problem(n, "'" + t + "' outside an exercise's ### section");
-            if (!std::regex_match(t, m, std::regex("#### Hint ([0-9]+)")))
-                return problem(n, "'" + t + "': the only level-4 headings are #### Hint 1, #### Hint 2 and #### Hint 3");
-            const int level = std::stoi(m[1]);
-            const int expected = static_cast<int>(current->levels.size()) + 1;
-            if (expected > 3) return problem(n, "'" + current->exercise + "' has more than 3 levels");
-            if (level != expected)
-                return problem(n, "'" + t + "' in '" + current->exercise + "': expected #### Hint " + std::to_string(expected) +
-                                      " (levels go 1, 2, 3 in order)");
-            current->levels.emplace_back();
-            continue;
-        }
-        if (heading) return problem(n, "'" + trim(line) + "': an unknown heading level");
-        if (!current) continue;  // the title, the introduction, a chapter's note
-        if (current->levels.empty()) {
-            if (!trim(line).empty())
-                return problem(n, "text before '#### Hint 1' in '" + current->exercise + "': every hint is in a level");
-            continue;
-        }
-        current->levels.back() += line + "\n";
+namespace {
+
+// Reads a hints file line by line; each step returns "" or the first problem, "<file>:<line>: ...".
+class LadderReader {
+public:
+    explicit LadderReader(const std::string& file_name) : file_(file_name) {}
+
+    std::string line(std::size_t n, const std::string& line) {
+        if (starts_with(trim(line), "```")) fence_ = !fence_;
+        const bool heading = !fence_ && starts_with(line, "#");
+        if (heading && (starts_with(line, "# ") || starts_with(line, "## ") || starts_with(line, "### ")))
+            return section(n, line);
+        if (heading && starts_with(line, "####")) return level(n, trim(line));
+        if (heading) return at(n, "'" + trim(line) + "': an unknown heading level");
+        return text(n, line);
     }
-    if (fence) return problem(lines.size() - 1, "a code block (```) is not closed");
-    if (const auto e = close(lines.size() - 1); !e.empty()) h.error = e;
-    for (auto& l : h.ladders)
-        for (auto& level : l.levels) level = trim(level);
+
+    std::string finish(std::size_t last) {
+        if (fence_) return at(last, "a code block (```) is not closed");
+        return close(last);
+    }
+
+    Hints take() {
+        for (auto& l : hints_.ladders)
+            for (auto& level : l.levels) level = trim(level);
+        return std::move(hints_);
+    }
+
+private:
+    std::string at(std::size_t n, const std::string& what) const {
+        return file_ + ":" + std::to_string(n + 1) + ": " + what;
+    }
+
+    // The ladder being read is complete: 2 or 3 levels, none empty.
+    std::string close(std::size_t n) const {
+        if (!current_) return "";
+        if (current_->levels.size() < 2)
+            return at(n, "the hints of '" + current_->exercise + "' have " + std::to_string(current_->levels.size()) +
+                             " level(s); a ladder has 2 or 3 (#### Hint 1, #### Hint 2, optionally #### Hint 3)");
+        for (std::size_t k = 0; k < current_->levels.size(); ++k)
+            if (trim(current_->levels[k]).empty())
+                return file_ + ":" + std::to_string(current_->line) + ": Hint " + std::to_string(k + 1) + " of '" +
+                       current_->exercise + "' is empty";
+        return "";
+    }
+
+    // A #, ## or ### heading closes the ladder; a ### heading opens the next exercise's.
+    std::string section(std::size_t n, const std::string& line) {
+        if (auto e = close(n); !e.empty()) return e;
+        current_ = nullptr;
+        if (!starts_with(line, "### ")) return "";
+        const std::string name = trim(line.substr(4));
+        if (!std::regex_match(name, std::regex("[A-Za-z_][A-Za-z0-9_]*")))
+            return at(n, "'### " + name + "' is not an exercise name (one identifier, as in exercises/rigid/*.hpp)");
+        if (find(hints_, name)) return at(n, "'" + name + "' has a second ### section");
+        hints_.ladders.push_back({name, static_cast<int>(n + 1), {}});
+        current_ = &hints_.ladders.back();
+        return "";
+    }
+
+    // "#### Hint k": the next level of the open ladder, in order 1, 2, 3.
+    std::string level(std::size_t n, const std::string& t) {
+        std::smatch m;
+        if (!current_) return at(n, "'" + t + "' outside an exercise's ### section");
+        if (!std::regex_match(t, m, std::regex("#### Hint ([0-9]+)")))
+            return at(n, "'" + t + "': the only level-4 headings are #### Hint 1, #### Hint 2 and #### Hint 3");
+        const int expected = static_cast<int>(current_->levels.size()) + 1;
+        if (expected > 3) return at(n, "'" + current_->exercise + "' has more than 3 levels");
+        if (std::stoi(m[1]) != expected)
+            return at(n, "'" + t + "' in '" + current_->exercise + "': expected #### Hint " + std::to_string(expected) +
+                             " (levels go 1, 2, 3 in order)");
+        current_->levels.emplace_back();
+        return "";
+    }
+
+    // Text belongs to the open level; outside a ladder it is the title, the introduction or a note.
+    std::string text(std::size_t n, const std::string& line) {
+        if (!current_) return "";
+        if (current_->levels.empty())
+            return trim(line).empty() ? ""
+                                      : at(n, "text before '#### Hint 1' in '" + current_->exercise +
+                                                  "': every hint is in a level");
+        current_->levels.back() += line + "\n";
+        return "";
+    }
+
+    std::string file_;
+    Hints hints_;
+    Ladder* current_ = nullptr;
+    bool fence_ = false;
+};
+
+}  // namespace
+
+Hints parse(const std::string& text, const std::string& file_name) {
+    const auto lines = lines_of(text);
+    LadderReader reader(file_name);
+    std::string error;
+    for (std::size_t n = 0; n < lines.size() && error.empty(); ++n) error = reader.line(n, lines[n]);
+    if (error.empty()) error = reader.finish(lines.empty() ? 0 : lines.size() - 1);
+    Hints h = reader.take();
+    h.error = error;
     return h;
 }
 

@@ -131,31 +131,41 @@ std::string hint_for(const Setup& setup, const std::string& exercise) {
     return ladder ? hints::for_terminal(*ladder, 1) : h.error.empty() ? "" : "\n" + h.error + "\n";
 }
 
-bool print_check(const Setup& setup, const SubmissionResult& r, const std::string& folder) {
-    struct Problem {
-        std::string topic, exercise, status;
-        const TestResult* test;
-    };
+namespace {
+
+// An exercise that does not pass, with the test that shows it.
+struct Problem {
+    std::string topic, exercise, status;
+    const TestResult* test;
+};
+
+struct Tally {
     std::vector<Problem> problems;
-    int all_pass = 0, all_total = 0;
+    int pass = 0, total = 0;
+};
+
+// One table per chapter: each selected exercise's status (and for a partial pass, how many tests
+// pass); collects the exercises that do not pass.
+Tally print_chapters(const Setup& setup, const SubmissionResult& r) {
+    Tally tally;
     for (const auto& chapter : setup.chapters) {
         std::vector<std::pair<std::string, ExerciseStatus>> rows;
-        std::vector<std::string> topics;
         for (const auto& topic : setup.topics) {
             if (topic.chapter != chapter.label) continue;
             for (const auto& e : topic.exercises) {
                 const ExerciseStatus s = status_of(r, topic.name, e.name);
                 if (s.status.empty()) continue;  // not selected
                 rows.emplace_back(e.name, s);
-                if (s.status != "pass") problems.push_back({topic.name, e.name, s.status, s.first_problem});
+                if (s.status != "pass") tally.problems.push_back({topic.name, e.name, s.status, s.first_problem});
             }
         }
         if (rows.empty()) continue;
         int pass = 0;
         for (const auto& [name, s] : rows) pass += s.status == "pass";
-        all_pass += pass;
-        all_total += static_cast<int>(rows.size());
-        std::printf("\nChapter %d, %s: %d of %zu exercises pass\n", chapter.number, chapter.title.c_str(), pass, rows.size());
+        tally.pass += pass;
+        tally.total += static_cast<int>(rows.size());
+        std::printf("\nChapter %d, %s: %d of %zu exercises pass\n", chapter.number, chapter.title.c_str(), pass,
+                    rows.size());
         for (const auto& [name, s] : rows) {
             std::string detail;
             if (s.status != "pass" && s.status != "not started" && s.status != "missing" && s.status != "build error")
@@ -165,54 +175,64 @@ bool print_check(const Setup& setup, const SubmissionResult& r, const std::strin
             std::printf("%s\n", trim(row).insert(0, "  ").c_str());
         }
     }
-    if (problems.empty()) {
-        std::printf("\nAll %d exercises pass.\n", all_total);
+    return tally;
+}
+
+// The first exercise to work on: the first one that fails, else the first not started.
+const Problem& first_problem(const std::vector<Problem>& problems) {
+    for (const auto& p : problems)
+        if (p.status != "not started") return p;
+    return problems.front();
+}
+
+// What the student sees of that exercise: its failing test and message (or that it is not
+// started), then a nudge: Hint 1 for a started exercise, the command for the next rungs otherwise.
+void print_first(const Setup& setup, const Problem& first, const std::string& folder) {
+    const TestResult& t = *first.test;
+    std::printf("\n%s: %s (%s/%s.cpp)\n", first.status == "not started" ? "Next exercise" : "First exercise to fix",
+                first.exercise.c_str(), folder.c_str(), first.topic.c_str());
+    if (first.status == "not started") {
+        std::printf("  not started: its body is still todo(\"%s\")\n", first.exercise.c_str());
+        std::printf("  a hint when you want one: cmake/workbook check %s --hint 1\n", first.exercise.c_str());
+        return;
+    }
+    std::printf("  test: %s\n  %s", t.name.c_str(), t.verdict.c_str());
+    if (t.verdict == "fail" || t.verdict == "build error" || t.verdict == "missing") {
+        std::printf(":\n");
+        for (const auto& line : split(t.message, '\n')) std::printf("    %s\n", line.c_str());
+    } else {
+        std::printf(": %s\n", t.message.c_str());
+    }
+    if (!t.output.empty()) {
+        std::printf("  the test printed:\n");
+        for (const auto& line : split(t.output, '\n')) std::printf("    %s\n", line.c_str());
+    }
+    std::printf("%s", hint_for(setup, first.exercise).c_str());
+}
+
+}  // namespace
+
+bool print_check(const Setup& setup, const SubmissionResult& r, const std::string& folder) {
+    const Tally tally = print_chapters(setup, r);
+    if (tally.problems.empty()) {
+        std::printf("\nAll %d exercises pass.\n", tally.total);
         return true;
     }
-    // The first exercise to work on: the first one that fails, else the first not started.
-    const Problem* first = nullptr;
-    for (const auto& p : problems)
-        if (p.status != "not started") {
-            first = &p;
-            break;
-        }
-    if (!first) first = &problems.front();
-    const TestResult& t = *first->test;
-    if (first->status == "build error" || first->status == "missing") {
+    const Problem& first = first_problem(tally.problems);
+    if (first.status == "build error" || first.status == "missing") {
         // The whole file is the problem, not one exercise.
-        std::printf("\n%s/%s.cpp: %s\n  %s\n", folder.c_str(), first->topic.c_str(),
-                    first->status == "missing" ? "not graded" : "does not build", t.message.c_str());
+        const TestResult& t = *first.test;
+        std::printf("\n%s/%s.cpp: %s\n  %s\n", folder.c_str(), first.topic.c_str(),
+                    first.status == "missing" ? "not graded" : "does not build", t.message.c_str());
         const Chapter* c = find_chapter(setup, t.chapter);
-        std::printf("\n%d of %d exercises pass. Check this chapter alone: cmake/workbook check %s\n", all_pass, all_total,
-                    c ? std::to_string(c->number).c_str() : t.chapter.c_str());
+        std::printf("\n%d of %d exercises pass. Check this chapter alone: cmake/workbook check %s\n", tally.pass,
+                    tally.total, c ? std::to_string(c->number).c_str() : t.chapter.c_str());
         return false;
     }
-    std::printf("\n%s: %s (%s/%s.cpp)\n", first->status == "not started" ? "Next exercise" : "First exercise to fix",
-                first->exercise.c_str(), folder.c_str(), first->topic.c_str());
-    if (first->status == "not started") {
-        std::printf("  not started: its body is still todo(\"%s\")\n", first->exercise.c_str());
-    } else {
-        std::printf("  test: %s\n  %s", t.name.c_str(), t.verdict.c_str());
-        std::string message = t.message;
-        if (t.verdict == "fail" || t.verdict == "build error" || t.verdict == "missing") {
-            std::printf(":\n");
-            for (const auto& line : split(message, '\n')) std::printf("    %s\n", line.c_str());
-        } else {
-            std::printf(": %s\n", message.c_str());
-        }
-        if (!t.output.empty()) {
-            std::printf("  the test printed:\n");
-            for (const auto& line : split(t.output, '\n')) std::printf("    %s\n", line.c_str());
-        }
-    }
-    // A nudge (Hint 1) only for an exercise the student has started; the next rungs on request.
-    if (first->status == "not started")
-        std::printf("  a hint when you want one: cmake/workbook check %s --hint 1\n", first->exercise.c_str());
-    else
-        std::printf("%s", hint_for(setup, first->exercise).c_str());
-    if (all_total > 1)
-        std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", all_pass, all_total,
-                    first->exercise.c_str());
+    print_first(setup, first, folder);
+    if (tally.total > 1)
+        std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", tally.pass,
+                    tally.total, first.exercise.c_str());
     return false;
 }
 
