@@ -721,3 +721,23 @@ function(workbook_function_size)
   set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 1800
                        SKIP_REGULAR_EXPRESSION "SKIPPED: clang-tidy was not found")
 endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The layout of the C++ sources: as .clang-format says (cmake/format_check.cmake; Debian's
+# clang-format, which cmake/workbook test installs). A second test proves the check can fail.
+function(workbook_format_check)
+  find_program(CLANG_FORMAT_EXECUTABLE NAMES clang-format clang-format-14)
+  set(format "${CLANG_FORMAT_EXECUTABLE}")
+  if(NOT format)
+    set(format "")
+  endif()
+  set(script "${WORKBOOK_ROOT}/cmake/format_check.cmake")
+  set(check "code: every C++ source is laid out as .clang-format says")
+  set(selftest "code: the format check flags a badly laid out file")
+  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT} -P "${script}")
+  add_test(NAME "${selftest}"
+           COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT}
+                   -DSELFTEST=${CMAKE_BINARY_DIR}/test/format-check -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: clang-format was not found")
+endfunction()
