@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "reference/quad_inertia.hpp"
 #include "common.hpp"
 #include "figure.hpp"
+#include "reference/quad_inertia.hpp"
 
 using namespace ch6;
 using quadref::quad;
@@ -23,15 +23,25 @@ double floored(double e) { return std::max(e, 1e-18); }
 
 }  // namespace
 
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    int points = 97;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.integer("points", &p.points, "distances, log-spaced from 1e-6 to 1e6 body sizes", 13, 10001);
+}
+
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("closed_form_accuracy",
                       "Chapter 6: digits kept by the printed and the rewritten closed forms, and by the eigen-solver");
-    body_options(opts);
-    opts.integer("points", 97, "distances, log-spaced from 1e-6 to 1e6 body sizes", 13, 10001);
+    declare(opts, p);
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const BodyAtG b = body(o);
-        const int n = static_cast<int>(o.integer("points"));
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const BodyAtG b = body(p.body);
+        const int n = p.points;
         const double ell = size_of(b);
         const int sign = 1;
         const Vec3 z = rigid::grioli_direction(b, sign);
@@ -52,13 +62,16 @@ int main(int argc, char** argv) {
             const double eA_stable = quadref::rel_err(g.frame.moments.A, r.A), eA_printed = quadref::rel_err(pm.A, r.A),
                          eA_eigen = quadref::rel_err(e.A, r.A);
             const double eCB_stable = quadref::rel_err(g.frame.moments.C_minus_B, r.CmB),
-                         eCB_printed = quadref::rel_err(pm.C_minus_B, r.CmB), eCB_eigen = quadref::rel_err(e.C - e.B, r.CmB);
-            const double es_stable = quadref::rel_err(g.tilt.sin2, r.sin2), es_printed = quadref::rel_err(1 - p.cos2_512(), r.sin2);
-            worst_stable = std::max({worst_stable, eA_stable, eCB_stable, es_stable, quadref::rel_err(g.frame.moments.C, r.C),
-                                     quadref::rel_err(g.tilt.cos2, r.cos2)});
+                         eCB_printed = quadref::rel_err(pm.C_minus_B, r.CmB),
+                         eCB_eigen = quadref::rel_err(e.C - e.B, r.CmB);
+            const double es_stable = quadref::rel_err(g.tilt.sin2, r.sin2),
+                         es_printed = quadref::rel_err(1 - p.cos2_512(), r.sin2);
+            worst_stable = std::max({worst_stable, eA_stable, eCB_stable, es_stable,
+                                     quadref::rel_err(g.frame.moments.C, r.C), quadref::rel_err(g.tilt.cos2, r.cos2)});
             worst_printed = std::max({worst_printed, eA_printed, eCB_printed, es_printed});
-            worst_eigen_abs = std::max({worst_eigen_abs, std::abs(e.A - g.frame.moments.A) / I.norm(),
-                                        std::abs(e.B - g.frame.moments.B) / I.norm(), std::abs(e.C - g.frame.moments.C) / I.norm()});
+            worst_eigen_abs =
+                std::max({worst_eigen_abs, std::abs(e.A - g.frame.moments.A) / I.norm(),
+                          std::abs(e.B - g.frame.moments.B) / I.norm(), std::abs(e.C - g.frame.moments.C) / I.norm()});
             worst_eigen_rel = std::max(worst_eigen_rel, eA_eigen);
             rows.push_back({L / ell, floored(eA_printed), floored(eA_stable), floored(eA_eigen), floored(eCB_printed),
                             floored(eCB_stable), floored(eCB_eigen), floored(es_printed), floored(es_stable)});
@@ -78,7 +91,8 @@ int main(int argc, char** argv) {
             const rigid::GrioliSuspension g = rigid::grioli_suspension(s, L, sign);
             const rigid::ShiftedMoments pm = rigid::printed_moments(s, L, zs);
             const Printed p = printed(s, L, zs);
-            const double ec_stable = quadref::rel_err(g.tilt.cos2, r.cos2), ec_printed = quadref::rel_err(p.cos2_512(), r.cos2);
+            const double ec_stable = quadref::rel_err(g.tilt.cos2, r.cos2),
+                         ec_printed = quadref::rel_err(p.cos2_512(), r.cos2);
             const double eBA_stable = quadref::rel_err(g.frame.moments.B_minus_A, r.BmA),
                          eBA_printed = quadref::rel_err(pm.B_minus_A, r.BmA);
             // h_crit on the line at half the critical cos^2, against binary128 with delta exact.
@@ -95,37 +109,48 @@ int main(int argc, char** argv) {
         }
 
         const double t_closed = kit::min_time([&] {
-            double s = 0;
-            for (int i = 0; i < 1000; ++i) s += rigid::shifted_moments(b, ell * (1 + 1e-3 * i), z).A;
-            kit::keep(s);
-        }) / 1000;
+                                    double s = 0;
+                                    for (int i = 0; i < 1000; ++i)
+                                        s += rigid::shifted_moments(b, ell * (1 + 1e-3 * i), z).A;
+                                    kit::keep(s);
+                                }) /
+                                1000;
         const double t_eigen = kit::min_time([&] {
-            double s = 0;
-            for (int i = 0; i < 1000; ++i) s += eigen_moments(tensor_at(b, ell * (1 + 1e-3 * i), z)).A;
-            kit::keep(s);
-        }) / 1000;
+                                   double s = 0;
+                                   for (int i = 0; i < 1000; ++i)
+                                       s += eigen_moments(tensor_at(b, ell * (1 + 1e-3 * i), z)).A;
+                                   kit::keep(s);
+                               }) /
+                               1000;
 
         scene.report.headline("max relative error of the rewritten closed forms against binary128, both sweeps",
                               std::max(worst_stable, worst_stable2), t_closed);
         scene.report.add("run_time_eigen_s", t_eigen, "per SelfAdjointEigenSolver call");
-        scene.report.add("worst_printed_rel_error", worst_printed, "printed (5.3), (5.12) on the Grioli line, L = 1e-6..1e6 sizes");
+        scene.report.add("worst_printed_rel_error", worst_printed,
+                         "printed (5.3), (5.12) on the Grioli line, L = 1e-6..1e6 sizes");
         scene.report.add("worst_stable_rel_error_distance", worst_stable, "rewritten forms, same sweep");
         scene.report.add("worst_stable_rel_error_symmetric", worst_stable2, "rewritten forms, nearly symmetric bodies");
-        scene.report.add("closed_vs_eigen_abs", worst_eigen_abs, "max |closed form - eigen-solver| / |I'| over the distance sweep");
-        scene.report.add("closed_vs_eigen_rel_A", worst_eigen_rel, "max relative error of Eigen's A against binary128, same sweep");
-        scene.report.table("distance_sweep", {"L/size", "A_printed", "A_stable", "A_eigen", "CmB_printed", "CmB_stable", "CmB_eigen",
-                                               "sin2_printed", "sin2_stable"},
+        scene.report.add("closed_vs_eigen_abs", worst_eigen_abs,
+                         "max |closed form - eigen-solver| / |I'| over the distance sweep");
+        scene.report.add("closed_vs_eigen_rel_A", worst_eigen_rel,
+                         "max relative error of Eigen's A against binary128, same sweep");
+        scene.report.table("distance_sweep",
+                           {"L/size", "A_printed", "A_stable", "A_eigen", "CmB_printed", "CmB_stable", "CmB_eigen",
+                            "sin2_printed", "sin2_stable"},
                            rows, false);
-        scene.report.table("symmetric_sweep", {"gap", "cos2_printed", "cos2_stable", "BmA_printed", "BmA_stable", "hcrit_printed",
-                                                "hcrit_stable"},
-                           rows2, false);
-        if (!(std::max(worst_stable, worst_stable2) <= 1e-13)) throw kit::NumericalFailure("a rewritten closed form lost digits");
+        scene.report.table(
+            "symmetric_sweep",
+            {"gap", "cos2_printed", "cos2_stable", "BmA_printed", "BmA_stable", "hcrit_printed", "hcrit_stable"}, rows2,
+            false);
+        if (!(std::max(worst_stable, worst_stable2) <= 1e-13))
+            throw kit::NumericalFailure("a rewritten closed form lost digits");
 
         {
             kit::Figure fig(scene, "accuracy_vs_distance.svg", 820, 520);
             if (fig.enabled()) {
                 fig << "set encoding utf8\nset logscale xy\nset format x '10^{%T}'\nset format y '10^{%T}'\n"
-                       "set xlabel 'distance L / body size √(C_g/μ), on a Grioli line'\nset ylabel 'relative error against binary128'\n"
+                       "set xlabel 'distance L / body size √(C_g/μ), on a Grioli line'\nset ylabel 'relative error "
+                       "against binary128'\n"
                        "set yrange [1e-18:10]\nset key below box opaque maxrows 3 font ',10'\n"
                        "set title 'printed forms (dashed) lose what the rewritten ones (solid) keep'\n"
                        "plot '-' using 1:2 with lines ls 1 dt 2 title 'A, printed (5.3)', "
@@ -148,8 +173,10 @@ int main(int argc, char** argv) {
                "set key below box opaque maxrows 2 font ',10'\nset title 'nearly symmetric bodies: B_g → A_g'\n"
                "plot '-' using 1:2 with lines ls 3 dt 2 title 'cos^2 φ on the line, printed (5.12)', "
                "'' using 1:3 with lines ls 3 title 'cos^2 φ, rewritten', "
-               "'' using 1:4 with lines ls 2 dt 2 title 'B - A, printed (5.3)', '' using 1:5 with lines ls 2 title 'B - A, rewritten', "
-               "'' using 1:6 with lines ls 4 dt 2 title 'h_{crit}, printed (5.8)', '' using 1:7 with lines ls 4 title 'h_{crit}, rewritten'\n";
+               "'' using 1:4 with lines ls 2 dt 2 title 'B - A, printed (5.3)', '' using 1:5 with lines ls 2 title 'B "
+               "- A, rewritten', "
+               "'' using 1:6 with lines ls 4 dt 2 title 'h_{crit}, printed (5.8)', '' using 1:7 with lines ls 4 title "
+               "'h_{crit}, rewritten'\n";
         for (int rep = 0; rep < 6; ++rep) fig.data(rows2);
         fig.finish();
     });

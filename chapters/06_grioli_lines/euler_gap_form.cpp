@@ -14,7 +14,6 @@
 //     exponential the moments at O lie in an instability tongue of the Grioli precession
 //     (Chapter 7), and no arithmetic can follow Theorem 1 for long.
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -75,7 +74,8 @@ Run integrate(const Hung& h, bool gaps, int periods, double tol, int repeats, lo
     const rigid::HeavyTop naive = rigid::heavy_top(Vec3(h.sm.A, h.sm.B, h.sm.C).asDiagonal(), h.P.f, h.P.k, h.z0);
     const rigid::OdeRhs rhs = [&](double, const VecX& y) {
         const rigid::BodyState x = rigid::unpack(y);
-        return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(h.m, h.P.f, h.P.k, h.z0, x) : rigid::euler_poisson_rhs(naive, x));
+        return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(h.m, h.P.f, h.P.k, h.z0, x)
+                                : rigid::euler_poisson_rhs(naive, x));
     };
     const double period = 2 * std::numbers::pi / h.P.alpha;
     const auto times = rigid::linspace(0, periods * period, 16 * periods);
@@ -83,20 +83,26 @@ Run integrate(const Hung& h, bool gaps, int periods, double tol, int repeats, lo
     s0.Omega += dOmega;
     Run r;
     try {
-        r.time_s = kit::min_time([&] {
-            r.error = 0;
-            r.at_periods.clear();
-            int k = 0;
-            r.evaluations = rigid::integrate_gsl(rhs, rigid::pack(s0), times,
-                                                 [&](double t, const VecX& y) {
-                                                     const rigid::BodyState x = rigid::unpack(y);
-                                                     r.error = std::max(r.error, rigid::geodesic_angle(x.R, rigid::grioli_rotation(h.P, t)));
-                                                     if (k++ % 16 == 0) r.at_periods.push_back(x);
-                                                 },
-                                                 {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol * std::min(1.0, h.P.alpha),
-                                                  .max_steps = max_steps})
-                                .rhs_calls;
-        }, repeats);
+        r.time_s = kit::min_time(
+            [&] {
+                r.error = 0;
+                r.at_periods.clear();
+                int k = 0;
+                r.evaluations =
+                    rigid::integrate_gsl(rhs, rigid::pack(s0), times,
+                                         [&](double t, const VecX& y) {
+                                             const rigid::BodyState x = rigid::unpack(y);
+                                             r.error = std::max(
+                                                 r.error, rigid::geodesic_angle(x.R, rigid::grioli_rotation(h.P, t)));
+                                             if (k++ % 16 == 0) r.at_periods.push_back(x);
+                                         },
+                                         {.method = "rk8pd",
+                                          .rel_tol = tol,
+                                          .abs_tol = tol * std::min(1.0, h.P.alpha),
+                                          .max_steps = max_steps})
+                        .rhs_calls;
+            },
+            repeats);
     } catch (const std::runtime_error&) {
         r = Run{};
         r.gave_up = true;
@@ -129,7 +135,8 @@ double jacobian_radius(const Hung& h) {
                 for (int l = 0; l < 3; ++l) D(3 + 3 * i + k, 3 + 3 * i + l) = Wh(l, k);
                 for (int n = 0; n < 3; ++n) D(3 + 3 * i + k, n) = (R * rigid::hat(Vec3::Unit(n)))(i, k);
             }
-        radius = std::max(radius, Eigen::EigenSolver<Eigen::Matrix<double, 12, 12>>(D, false).eigenvalues().cwiseAbs().maxCoeff());
+        radius = std::max(
+            radius, Eigen::EigenSolver<Eigen::Matrix<double, 12, 12>>(D, false).eigenvalues().cwiseAbs().maxCoeff());
     }
     return radius / h.P.alpha;
 }
@@ -154,28 +161,42 @@ struct Body {
 
 }  // namespace
 
+struct Params {
+    double step = 0.25;
+    int periods = 100;
+    double tol = 1e-13;
+    int repeats = 2;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.real("step", &p.step, "spacing of the distances L, in decades (from 1e-6 to 1e8 body sizes)",
+              kit::between(0.05, 2))
+        .integer("periods", &p.periods, "periods 2 pi / alpha per run", 4, 1000)
+        .real("tol", &p.tol, "rk8pd relative tolerance", kit::between(1e-14, 1e-8))
+        .integer("repeats", &p.repeats, "timing repetitions of each form (the minimum is kept)", 1, 20);
+}
+
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("euler_gap_form",
                       "Chapter 6: Euler's equations naive and on the moment gaps, far out on a Grioli line");
-    opts.real("step", 0.25, "spacing of the distances L, in decades (from 1e-6 to 1e8 body sizes)", kit::between(0.05, 2))
-        .integer("periods", 100, "periods 2 pi / alpha per run", 4, 1000)
-        .real("tol", 1e-13, "rk8pd relative tolerance", kit::between(1e-14, 1e-8))
-        .integer("repeats", 2, "timing repetitions of each form (the minimum is kept)", 1, 20);
+    declare(opts, p);
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const double step = o.real("step"), tol = o.real("tol");
-        const int periods = static_cast<int>(o.integer("periods")), repeats = static_cast<int>(o.integer("repeats"));
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const double step = p.step, tol = p.tol;
+        const int periods = p.periods, repeats = p.repeats;
         const std::vector<Body> bodies = {{"(1, 2, 2.5)", {1, 2, 2.5, 1}},
                                           {"(1, 1 + 1e-6, 2)", {1, 1 + 1e-6, 2, 1}},
                                           {"(1, 1.5, 1.5 + 1e-6)", {1, 1.5, 1.5 + 1e-6, 1}},
                                           {"(2, 3, 4)", {2, 3, 4, 1}}};
         std::vector<double> decades;
-        for (int i = 0; -6 + i * step <= 8 + 1e-9; ++i) decades.push_back(-6 + i * step);
+        for (int i = 0; - 6 + i * step <= 8 + 1e-9; ++i) decades.push_back(-6 + i * step);
         // The naive form gets at most 200 steps between two outputs (the gap form needs about 5).
         const long naive_cap = 200;
         const double per_period = ch5::seconds_per_period("rk8pd", tol);
-        kit::require_budget(o, {double(bodies.size() * decades.size()) * periods,
-                                per_period * (repeats + 1) + 16 * naive_cap * 2e-6 / 10, "periods", "--step, --periods, --repeats"});
+        kit::require_budget(
+            o, {double(bodies.size() * decades.size()) * periods,
+                per_period * (repeats + 1) + 16 * naive_cap * 2e-6 / 10, "periods", "--step, --periods, --repeats"});
 
         // The table: one row per body and distance.
         std::vector<std::vector<double>> rows;
@@ -191,21 +212,24 @@ int main(int argc, char** argv) {
                 const double rate = growth_rate(gap, twin), radius = jacobian_radius(h);
                 // Exponential growth: faster than ln 2 per quarter of the run.
                 const bool stable = !(rate > 4 * std::log(2.0) / periods);
-                if (stable) worst_stable = std::max(worst_stable, gap.error);
-                else ++unstable;
+                if (stable)
+                    worst_stable = std::max(worst_stable, gap.error);
+                else
+                    ++unstable;
                 slowest = std::max(slowest, gap.time_s);
                 worst_radius = std::max(worst_radius, radius);
                 const bool naive_ok = !naive.gave_up && naive.error <= 1e-9;
                 if (b == 0 && stable && !naive_ok && std::isnan(naive_first_fail)) naive_first_fail = x;
                 rows.push_back({double(b), x, h.sm.C_minus_B, h.sm.C - h.sm.B, eps * h.sm.B / h.sm.A, radius, gap.error,
-                                gap.time_s, double(gap.evaluations), naive.error, naive.time_s, double(naive.evaluations), rate,
-                                stable ? 1.0 : 0.0});
+                                gap.time_s, double(gap.evaluations), naive.error, naive.time_s,
+                                double(naive.evaluations), rate, stable ? 1.0 : 0.0});
             }
         }
         if (!std::isfinite(worst_stable)) throw kit::NumericalFailure("the gap form produced a non-finite rotation");
-        scene.report.headline("largest error of the gap form, every body and distance where the precession is not "
-                              "exponentially unstable (geodesic angle to Theorem 1, rad)",
-                              worst_stable, slowest);
+        scene.report.headline(
+            "largest error of the gap form, every body and distance where the precession is not "
+            "exponentially unstable (geodesic angle to Theorem 1, rad)",
+            worst_stable, slowest);
         scene.report.add("periods", static_cast<long>(periods));
         scene.report.add("tol", tol);
         scene.report.add("points", static_cast<long>(rows.size()), "bodies x distances");
@@ -214,39 +238,55 @@ int main(int argc, char** argv) {
         scene.report.add("largest_jacobian_radius_over_alpha", worst_radius,
                          "max over every point of max |eigenvalue| / alpha: sqrt(2) = 1.414 for every L");
         scene.report.add("naive_first_failure_decade", naive_first_fail,
-                         "body (1, 2, 2.5): log10 of the first L (body sizes) where the naive form misses 1e-9 or gives up (stable points)");
+                         "body (1, 2, 2.5): log10 of the first L (body sizes) where the naive form misses 1e-9 or "
+                         "gives up (stable points)");
         // Rows of the default body at chosen distances, for the chapter's table.
         std::vector<std::vector<double>> chosen;
         for (const auto& r : rows)
-            if (r[0] == 0 && std::abs(r[1] - std::round(r[1])) < 1e-9 && int(std::round(r[1])) % 2 == 0) chosen.push_back(r);
-        const std::vector<std::string> columns = {"body", "log10_L_sizes", "C_minus_B", "C_minus_B_double", "eps_B_over_A",
-                                                  "jacobian_radius_over_alpha", "gap_error", "gap_time_s", "gap_evaluations",
-                                                  "naive_error", "naive_time_s", "naive_evaluations", "growth_per_period",
+            if (r[0] == 0 && std::abs(r[1] - std::round(r[1])) < 1e-9 && int(std::round(r[1])) % 2 == 0)
+                chosen.push_back(r);
+        const std::vector<std::string> columns = {"body",
+                                                  "log10_L_sizes",
+                                                  "C_minus_B",
+                                                  "C_minus_B_double",
+                                                  "eps_B_over_A",
+                                                  "jacobian_radius_over_alpha",
+                                                  "gap_error",
+                                                  "gap_time_s",
+                                                  "gap_evaluations",
+                                                  "naive_error",
+                                                  "naive_time_s",
+                                                  "naive_evaluations",
+                                                  "growth_per_period",
                                                   "stable"};
         scene.report.table("default_body", columns, chosen);
         scene.report.table("sweep", columns, rows, false);
         std::string legend;
-        for (std::size_t b = 0; b < bodies.size(); ++b) legend += (b ? ", " : "") + std::to_string(b) + " = " + bodies[b].name;
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            legend += (b ? ", " : "") + std::to_string(b) + " = " + bodies[b].name;
         scene.report.note("bodies (A_g, B_g, C_g), mu = 1: " + legend + "; naive_error NaN: gave up after " +
                           std::to_string(naive_cap) + " steps between two outputs");
         // The chapter's promise, for the tolerances it is made at (a looser one misses it by design).
         if (tol <= 1e-12 && !(worst_stable <= 1e-9)) {
             char buf[64];
             std::snprintf(buf, sizeof buf, "%.2g", worst_stable);
-            throw kit::CheckFailed(std::string("the gap form misses Theorem 1 by ") + buf +
-                                   " rad where the precession is stable; at tolerance <= 1e-12 the chapter promises 1e-9");
+            throw kit::CheckFailed(
+                std::string("the gap form misses Theorem 1 by ") + buf +
+                " rad where the precession is stable; at tolerance <= 1e-12 the chapter promises 1e-9");
         }
 
         kit::Figure fig(scene, "euler_gap_form.svg", 1100, 480);
         if (!fig.enabled()) return;
-        fig << "set encoding utf8\nset multiplot layout 1, 2 title 'A body hung at L on a Grioli line, " + std::to_string(periods) +
+        fig << "set encoding utf8\nset multiplot layout 1, 2 title 'A body hung at L on a Grioli line, " +
+                   std::to_string(periods) +
                    " periods of rk8pd: Euler equations naive (open, dashed) and on the moment gaps (filled, solid)'\n"
                    "set logscale y\nset format y '10^{%T}'\nset xlabel 'log_{10} of L in body sizes sqrt(C_g/μ)'\n"
                    "set xrange [-6.3:8.3]\nset xtics 2\nset key below font ',9' maxrows 3\n";
         for (int panel = 0; panel < 2; ++panel) {
-            fig << (panel == 0 ? "set title 'error against Theorem 1 (×: unstable, Chapter 7; at 30: naive gave up)'\n"
-                                 "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
-                               : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
+            fig << (panel == 0
+                        ? "set title 'error against Theorem 1 (×: unstable, Chapter 7; at 30: naive gave up)'\n"
+                          "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
+                        : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
             std::string plot = "plot ";
             std::vector<std::vector<std::vector<double>>> blocks;
             for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -255,16 +295,20 @@ int main(int argc, char** argv) {
                     if (r[0] != double(b)) continue;
                     const double gv = panel == 0 ? r[6] : r[7];
                     (r[13] > 0 ? g : u).push_back({r[1], std::max(gv, 1e-12)});
-                    const double nv = panel == 0 ? (std::isnan(r[9]) ? 30.0 : r[9]) : (std::isnan(r[10]) ? nan_ : r[10]);
+                    const double nv =
+                        panel == 0 ? (std::isnan(r[9]) ? 30.0 : r[9]) : (std::isnan(r[10]) ? nan_ : r[10]);
                     if (!std::isnan(nv)) n.push_back({r[1], std::max(nv, 1e-12)});
                 }
                 const std::string ls = "ls " + std::to_string(b + 1);
                 plot += "'-' with linespoints " + ls + " title " + kit::quoted("gaps, " + bodies[b].name) + ", ";
-                plot += "'-' with linespoints " + ls + " dt 2 pt 6 title " + kit::quoted("naive, " + bodies[b].name) + ", ";
+                plot +=
+                    "'-' with linespoints " + ls + " dt 2 pt 6 title " + kit::quoted("naive, " + bodies[b].name) + ", ";
                 plot += "'-' with points " + ls + " pt 2 ps 1.2 notitle, ";
-                blocks.push_back(g), blocks.push_back(n), blocks.push_back(u.empty() ? std::vector<std::vector<double>>{{nan_, nan_}} : u);
+                blocks.push_back(g), blocks.push_back(n),
+                    blocks.push_back(u.empty() ? std::vector<std::vector<double>>{{nan_, nan_}} : u);
             }
-            plot += panel == 0 ? "1e-9 with lines ls 9 title 'target 10^{-9}'\n" : "0.05 with lines ls 9 title 'target 50 ms'\n";
+            plot += panel == 0 ? "1e-9 with lines ls 9 title 'target 10^{-9}'\n"
+                               : "0.05 with lines ls 9 title 'target 50 ms'\n";
             fig << plot;
             for (const auto& bl : blocks) fig.data(bl);
         }

@@ -21,8 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <string>
 #include <numbers>
+#include <string>
 
 #include "../05_grioli_precession/common.hpp"
 #include "common.hpp"
@@ -44,34 +44,54 @@ std::string sci(double x) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    kit::Options opts("grioli_body",
-                      "Chapter 6: a body given at its centre of mass, hung on a Grioli line, precessing as Theorem 1 says");
-    ch6::body_options(opts);
-    opts.real("g", 9.81, "acceleration of gravity g", kit::between(1e-6, 1e6))
-        .real("L", 0.5, "distance from the centre of mass G to the suspension point O, along the Grioli line "
-                        "(1e-6 to 1e8 body sizes sqrt(C_g / mu))",
-              kit::between(1e-12, 1e14))
-        .integer("line", 1, "which Grioli line (5.15): +1 for x_C = +k x_A, -1 for x_C = -k x_A", -1, 1)
-        .choice("sense", "ccw", {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
-        .choice("form", "gaps", {"gaps", "naive"},
-                "Euler's equations on the moment gaps, or the naive form (J Omega) x Omega of Chapter 4")
-        .integer("periods", 100, "periods 2 pi / alpha to integrate", 1, 100000)
-        .real("tol", 1e-13, "rk8pd relative tolerance", kit::between(1e-15, 1e-2));
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    double g = 9.81;
+    double L = 0.5;
+    int line = 1;
+    std::string sense = "ccw";
+    std::string form = "gaps";
+    long periods = 100;
+    double tol = 1e-13;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::BodyAtG body = ch6::body(o);
-        const double L = o.real("L"), grav = o.real("g"), size = ch6::size_of(body);
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.real("g", &p.g, "acceleration of gravity g", kit::between(1e-6, 1e6))
+        .real("L", &p.L,
+              "distance from the centre of mass G to the suspension point O, along the Grioli line "
+              "(1e-6 to 1e8 body sizes sqrt(C_g / mu))",
+              kit::between(1e-12, 1e14))
+        .integer("line", &p.line, "which Grioli line (5.15): +1 for x_C = +k x_A, -1 for x_C = -k x_A", -1, 1)
+        .choice("sense", &p.sense, {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
+        .choice("form", &p.form, {"gaps", "naive"},
+                "Euler's equations on the moment gaps, or the naive form (J Omega) x Omega of Chapter 4")
+        .integer("periods", &p.periods, "periods 2 pi / alpha to integrate", 1, 100000)
+        .real("tol", &p.tol, "rk8pd relative tolerance", kit::between(1e-15, 1e-2));
+}
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts(
+        "grioli_body",
+        "Chapter 6: a body given at its centre of mass, hung on a Grioli line, precessing as Theorem 1 says");
+    declare(opts, p);
+
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const rigid::BodyAtG body = ch6::body(p.body);
+        const double L = p.L, grav = p.g, size = ch6::size_of(body);
         if (!(L >= 1e-6 * size && L <= 1e8 * size))
-            throw kit::BadInput("--L: got " + std::to_string(L) + ", " + std::to_string(L / size) +
-                                " body sizes; it must be from 1e-6 to 1e8 body sizes sqrt(C_g / mu) = " + std::to_string(size));
-        const int line = static_cast<int>(o.integer("line"));
+            throw kit::BadInput(
+                "--L: got " + std::to_string(L) + ", " + std::to_string(L / size) +
+                " body sizes; it must be from 1e-6 to 1e8 body sizes sqrt(C_g / mu) = " + std::to_string(size));
+        const int line = p.line;
         if (line == 0) throw kit::BadInput("--line: got 0; it must be +1 or -1");
-        const long periods = o.integer("periods");
-        const bool gaps = o.choice("form") == "gaps";
-        const double tol = o.real("tol");
+        const long periods = p.periods;
+        const bool gaps = p.form == "gaps";
+        const double tol = p.tol;
         // The work: about ch5::seconds_per_period per period, three timed runs when they are short.
-        kit::require_budget(o, {3.0 * double(periods), ch5::seconds_per_period("rk8pd", tol), "periods of rk8pd", "--periods, --tol"});
+        kit::require_budget(
+            o, {3.0 * double(periods), ch5::seconds_per_period("rk8pd", tol), "periods of rk8pd", "--periods, --tol"});
 
         // snippet: grioli_body
         // 1-2. The suspension point on the Grioli line, and the moments and axes there.
@@ -81,7 +101,7 @@ int main(int argc, char** argv) {
 
         // 3. Theorem 1's precession for these moments and f = g L mu.
         const double f = grav * L * body.mu;
-        const rigid::Sense sense = o.choice("sense") == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
+        const rigid::Sense sense = p.sense == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
         const rigid::GrioliPrecession P = rigid::grioli_precession(m, f, sense);
 
         // The principal frame at O is fixed only up to half-turns about its axes; pick the one
@@ -95,7 +115,8 @@ int main(int argc, char** argv) {
         const rigid::HeavyTop naive = rigid::heavy_top(Vec3(sm.A, sm.B, sm.C).asDiagonal(), f, P.k, z0);
         const rigid::OdeRhs rhs = [&](double, const rigid::VecX& y) {
             const rigid::BodyState x = rigid::unpack(y);
-            return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(m, f, P.k, z0, x) : rigid::euler_poisson_rhs(naive, x));
+            return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(m, f, P.k, z0, x)
+                                    : rigid::euler_poisson_rhs(naive, x));
         };
         const double period = 2 * std::numbers::pi / P.alpha;
         const auto times = rigid::linspace(0, periods * period, static_cast<int>(16 * periods));
@@ -106,33 +127,35 @@ int main(int argc, char** argv) {
         rigid::OdeStats stats;
         const auto run = [&] {
             max_error = 0;
-            stats = rigid::integrate_gsl(rhs, rigid::pack(rigid::grioli_initial_state(P)), times,
-                                         [&](double t, const rigid::VecX& y) {
-                                             max_error = std::max(max_error, rigid::geodesic_angle(rigid::unpack(y).R,
-                                                                                                   rigid::grioli_rotation(P, t)));
-                                         },
-                                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol * std::min(1.0, P.alpha),
-                                          .max_steps = max_steps});
+            stats = rigid::integrate_gsl(
+                rhs, rigid::pack(rigid::grioli_initial_state(P)), times,
+                [&](double t, const rigid::VecX& y) {
+                    max_error =
+                        std::max(max_error, rigid::geodesic_angle(rigid::unpack(y).R, rigid::grioli_rotation(P, t)));
+                },
+                {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol * std::min(1.0, P.alpha), .max_steps = max_steps});
         };
         double run_time = 0;
         try {
             run_time = kit::min_time(run, 1);
             if (run_time < 0.1) run_time = std::min(run_time, kit::min_time(run, 2));
         } catch (const std::runtime_error& e) {
-            throw kit::NumericalFailure(std::string(e.what()) + " (more than " + std::to_string(max_steps) +
-                                        " steps between two outputs, the budget's share" +
-                                        (gaps ? std::string(")")
-                                              : "; the naive form's steps chase round-off of relative size eps B / A = " +
-                                                    sci(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
-                                                    " in Omega_dot_A: try --form gaps)"));
+            throw kit::NumericalFailure(
+                std::string(e.what()) + " (more than " + std::to_string(max_steps) +
+                " steps between two outputs, the budget's share" +
+                (gaps ? std::string(")")
+                      : "; the naive form's steps chase round-off of relative size eps B / A = " +
+                            sci(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
+                            " in Omega_dot_A: try --form gaps)"));
         }
         if (!std::isfinite(max_error)) throw kit::NumericalFailure("the integration produced a non-finite rotation");
 
-        scene.report.headline("max over t of the geodesic angle between the body's integrated R(t) and "
-                              "R^b(alpha t) R^a(alpha t) of Theorem 1",
-                              max_error, run_time);
+        scene.report.headline(
+            "max over t of the geodesic angle between the body's integrated R(t) and "
+            "R^b(alpha t) R^a(alpha t) of Theorem 1",
+            max_error, run_time);
         const Mat3 J_body = Q.transpose() * s.frame.I * Q;  // the body's tensor (5.2) in that frame
-        scene.report.add("form", o.choice("form"), "Euler's equations on the gaps, or naive");
+        scene.report.add("form", p.form, "Euler's equations on the gaps, or naive");
         scene.report.add("A", sm.A, "principal moments at O (5.3)");
         scene.report.add("B", sm.B);
         scene.report.add("C", sm.C);
@@ -152,7 +175,7 @@ int main(int argc, char** argv) {
         scene.report.add("z0_minus_a", (z0 - P.z0).norm(), "|z(0) - a|: the body's centre of mass against Theorem 1's");
         scene.report.add("J_offdiagonal", (J_body - Vec3(sm.A, sm.B, sm.C).asDiagonal().toDenseMatrix()).norm() / sm.C,
                          "|J - diag(A, B, C)| / C: the body's tensor (5.2) against the closed-form moments");
-        scene.report.add("sense", o.choice("sense"));
+        scene.report.add("sense", p.sense);
         scene.report.add("periods", periods);
         scene.report.add("rhs_calls", stats.rhs_calls, "one run");
         scene.report.add("max_rotation_error", max_error, "radians");

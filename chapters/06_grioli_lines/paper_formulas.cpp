@@ -5,8 +5,8 @@
 // of Sect. 6, measured. Fails (exit 1) when a formula that the chapter says holds does not.
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 #include <string>
@@ -31,21 +31,34 @@ struct Check {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    kit::Options opts("paper_formulas", "Chapter 6: every printed formula of [P, Sect. 6] against an independent computation");
-    opts.integer("cases", 2000, "random bodies, directions and distances (L from 0.01 to 100 body sizes)", 10, 1000000)
-        .integer("seed", 6, "seed of the random cases", 0, 1000000000);
+struct Params {
+    int cases = 2000;
+    long seed = 6;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        std::mt19937_64 rng(static_cast<unsigned long>(o.integer("seed")));
+void declare(kit::Options& opts, Params& p) {
+    opts.integer("cases", &p.cases, "random bodies, directions and distances (L from 0.01 to 100 body sizes)", 10,
+                 1000000)
+        .integer("seed", &p.seed, "seed of the random cases", 0, 1000000000);
+}
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("paper_formulas",
+                      "Chapter 6: every printed formula of [P, Sect. 6] against an independent computation");
+    declare(opts, p);
+
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        std::mt19937_64 rng(static_cast<unsigned long>(p.seed));
         auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
         auto random_body = [&] {
             double s[3] = {uniform(0.05, 2), uniform(0.05, 2), uniform(0.05, 2)};
             std::sort(s, s + 3);
             return BodyAtG{s[1] + s[0], s[2] + s[0], s[2] + s[1], uniform(0.3, 3)};
         };
-        const int cases = static_cast<int>(o.integer("cases"));
-        kit::require_budget(o, {double(cases), 2e-5, "cases (each every printed formula, in double and binary128)", "--cases"});
+        const int cases = p.cases;
+        kit::require_budget(
+            o, {double(cases), 2e-5, "cases (each every printed formula, in double and binary128)", "--cases"});
         const double eps = std::numeric_limits<double>::epsilon();
         double e52 = 0, e53 = 0, e54[3] = {0, 0, 0}, e510 = 0, e59[2] = {0, 0}, e511 = 0, e512 = 0, e512d = 0, e513 = 0,
                e58 = 0, e515 = 0;
@@ -82,7 +95,8 @@ int main(int argc, char** argv) {
                 e52 = std::max(e52, (printed52 - IO).cwiseAbs().maxCoeff() / IO.norm());
             }
             // (5.3) against the eigen-solver.
-            e53 = std::max({e53, std::abs(p.A() - e.A) / scale, std::abs(p.B() - e.B) / scale, std::abs(p.C() - e.C) / scale});
+            e53 = std::max(
+                {e53, std::abs(p.A() - e.A) / scale, std::abs(p.B() - e.B) / scale, std::abs(p.C() - e.C) / scale});
             // (5.4): the three forms of D against (C - A)^2; (5.10) against the last form.
             const double D_ref = (e.C - e.A) * (e.C - e.A), D_scale = (h + b.C_g + b.A_g) * (h + b.C_g + b.A_g);
             e54[0] = std::max(e54[0], std::abs(p.D1() - D_ref) / D_scale);
@@ -111,7 +125,8 @@ int main(int argc, char** argv) {
                     pp.h = hh;
                     return root(pp.D3());
                 };
-                const q dsqrtD = (-sqrtD(pq.h + 2 * d) + 8 * sqrtD(pq.h + d) - 8 * sqrtD(pq.h - d) + sqrtD(pq.h - 2 * d)) / (12 * d);
+                const q dsqrtD =
+                    (-sqrtD(pq.h + 2 * d) + 8 * sqrtD(pq.h + d) - 8 * sqrtD(pq.h - d) + sqrtD(pq.h - 2 * d)) / (12 * d);
                 e512d = std::max(e512d, static_cast<double>(quadref::abs_q(q(0.5) + dsqrtD / 2 - pq.cos2_512())));
             }
             // (5.13) against the eigen-solver's (B - A)/(C - A).
@@ -126,11 +141,12 @@ int main(int argc, char** argv) {
             e58 = std::max(e58, std::abs(printed(b, 1.0, z).h_crit_58() - x.h()) / x.hi);
             // (5.14)/(5.15) against Grioli: the plane orthogonal to the line cuts x^T I_G x = 1 in a circle.
             for (int s : {1, -1}) {
-                const double zA = std::sqrt((b.B_g - b.A_g) / (b.C_g - b.A_g));          // (5.14)
+                const double zA = std::sqrt((b.B_g - b.A_g) / (b.C_g - b.A_g));           // (5.14)
                 const double zC = s * std::sqrt((b.C_g - b.B_g) / (b.B_g - b.A_g)) * zA;  // (5.15): x_C = +-k x_A
                 const Vec3 n = Vec3(zA, 0, zC).normalized(), p = n.unitOrthogonal(), q = n.cross(p);
                 const Mat3 IG = Vec3(b.A_g, b.B_g, b.C_g).asDiagonal();
-                e515 = std::max({e515, std::abs(p.dot(IG * p) - q.dot(IG * q)) / b.C_g, std::abs(p.dot(IG * q)) / b.C_g});
+                e515 =
+                    std::max({e515, std::abs(p.dot(IG * p) - q.dot(IG * q)) / b.C_g, std::abs(p.dot(IG * q)) / b.C_g});
             }
         }
         const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -145,7 +161,8 @@ int main(int argc, char** argv) {
         const double axis_after = rigid::principal_frame(b, std::sqrt(1.6), Vec3::UnitZ()).R(2, 0);
         // "C(h) -> B(h) along an asymptote": h (C - B) -> (B_g - A_g)(C_g - B_g).
         const double h_big = 1e8;
-        const double rate = rigid::grioli_suspension(b, std::sqrt(h_big), 1).frame.moments.C_minus_B * h_big / (dBA * dCB);
+        const double rate =
+            rigid::grioli_suspension(b, std::sqrt(h_big), 1).frame.moments.C_minus_B * h_big / (dBA * dCB);
         // "in the limit L -> infinity [the smallest axis] coincides with the centre-of-mass axis":
         // sin^2 phi h^2 -> (C_g - A_g)^2 sin^2(2 phi_g) / 4.
         const Vec3 z45 = rigid::shift_direction(std::numbers::pi / 4);
@@ -161,14 +178,17 @@ int main(int argc, char** argv) {
             {"eq_5_4_second", "(5.4) second form", e54[1], 64 * eps},
             {"eq_5_4_third", "(5.4) third form", e54[2], 64 * eps},
             {"eq_5_10", "(5.10) D = alpha^2 + 4 h^2 z_A^2 z_C^2 against (5.4), same scale", e510, 64 * eps},
-            {"eq_5_9_first", "(5.9) first form, in binary128: the angle of v against Eigen's smallest axis (rad)", e59[0], 1e-12},
+            {"eq_5_9_first", "(5.9) first form, in binary128: the angle of v against Eigen's smallest axis (rad)",
+             e59[0], 1e-12},
             {"eq_5_9_second", "(5.9) second form, same", e59[1], 1e-12},
             {"eq_5_11", "(5.11) solved for cos^2 phi, in binary128, against Eigen's axis", e511, 1e-12},
             {"eq_5_12", "(5.12) in binary128 against Eigen's axis", e512, 1e-12},
-            {"eq_5_12_derivative", "(5.12) first equality, 1/2 + 1/2 d sqrt(D)/dh, 4th-order central difference in binary128", e512d, 1e-15},
+            {"eq_5_12_derivative",
+             "(5.12) first equality, 1/2 + 1/2 d sqrt(D)/dh, 4th-order central difference in binary128", e512d, 1e-15},
             {"eq_5_13", "(5.13) against Eigen's (B - A)/(C - A), times (C - A)/|I'|", e513, 64 * eps},
             {"eq_5_8", "(5.8) as printed against a bisection on Eigen's C - B, / h", e58, 1e-9},
-            {"eq_5_15_circular", "(5.14), (5.15): the section orthogonal to the line is a circle, / C_g", e515, 16 * eps},
+            {"eq_5_15_circular", "(5.14), (5.15): the section orthogonal to the line is a circle, / C_g", e515,
+             16 * eps},
         };
         double worst = 0;
         std::string failed;
@@ -179,12 +199,17 @@ int main(int argc, char** argv) {
         }
         scene.report.headline("max error / tolerance over the printed formulas (5.2)-(5.15)", worst, run_time);
         scene.report.add("cases", static_cast<long>(cases));
-        scene.report.add("claim_A_increasing", A_far_on_xA, "A(L = 1000) - A_g along x_A: 0, so A is only non-decreasing");
+        scene.report.add("claim_A_increasing", A_far_on_xA,
+                         "A(L = 1000) - A_g along x_A: 0, so A is only non-decreasing");
         scene.report.add("claim_smallest_axis_before", axis_before, "R_A . x_A along x_C at h = 1.4 < C_g - A_g");
-        scene.report.add("claim_smallest_axis_after", axis_after, "R_A . x_C along x_C at h = 1.6 > C_g - A_g: the axis jumped");
-        scene.report.add("claim_asymptote_rate", rate, "h (C - B) / ((B_g - A_g)(C_g - B_g)) at h = 1e8 on a Grioli line: -> 1");
-        scene.report.add("claim_axis_limit_rate", sin2_rate, "h^2 sin^2 phi / ((C_g - A_g)^2 sin^2 2phi_g / 4) at h = 1e8: -> 1");
-        scene.report.add("claim_hyperbola_cos2_phi", cos2_hyperbola, "cos^2 (R_A, z) where B = C on cos^2 phi_g = 1/3: G is off the symmetry axis");
+        scene.report.add("claim_smallest_axis_after", axis_after,
+                         "R_A . x_C along x_C at h = 1.6 > C_g - A_g: the axis jumped");
+        scene.report.add("claim_asymptote_rate", rate,
+                         "h (C - B) / ((B_g - A_g)(C_g - B_g)) at h = 1e8 on a Grioli line: -> 1");
+        scene.report.add("claim_axis_limit_rate", sin2_rate,
+                         "h^2 sin^2 phi / ((C_g - A_g)^2 sin^2 2phi_g / 4) at h = 1e8: -> 1");
+        scene.report.add("claim_hyperbola_cos2_phi", cos2_hyperbola,
+                         "cos^2 (R_A, z) where B = C on cos^2 phi_g = 1/3: G is off the symmetry axis");
         if (!failed.empty()) throw kit::NumericalFailure("printed formulas out of tolerance:" + failed);
     });
 }

@@ -16,19 +16,31 @@
 
 using namespace ch6;
 
-int main(int argc, char** argv) {
-    kit::Options opts("regions_plane", "Chapter 6, Figure 5: regions I-VI of the principal plane, hyperbola (5.7), Grioli lines (5.15)");
-    body_options(opts);
-    opts.integer("lines", 64, "lines below the critical angle on which B = C is found by bisection", 4, 4096)
-        .integer("grid", 121, "grid points per side for the region check", 11, 1001);
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    int lines = 64;
+    int grid = 121;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const BodyAtG b = body(o);
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.integer("lines", &p.lines, "lines below the critical angle on which B = C is found by bisection", 4, 4096)
+        .integer("grid", &p.grid, "grid points per side for the region check", 11, 1001);
+}
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("regions_plane",
+                      "Chapter 6, Figure 5: regions I-VI of the principal plane, hyperbola (5.7), Grioli lines (5.15)");
+    declare(opts, p);
+
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const BodyAtG b = body(p.body);
         const double dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g;
         const double crit = rigid::critical_cos2(b);
 
         // (5.7) and (5.8) at the eigen-solver's crossings.
-        const int lines = static_cast<int>(o.integer("lines"));
+        const int lines = p.lines;
         double err_hyperbola = 0, err_hcrit = 0, err_hcrit_printed = 0;
         for (int i = 0; i < lines; ++i) {
             const double c2 = crit * (i + 0.5) / lines;  // cos^2 phi_g in (0, crit)
@@ -40,25 +52,28 @@ int main(int argc, char** argv) {
         }
 
         // region() against the order of Eigen's moments on a grid.
-        const int n = static_cast<int>(o.integer("grid"));
+        const int n = p.grid;
         const double R = 2.5 * std::sqrt(std::max(dBA, dCB) / b.mu);
         long mismatches = 0, checked = 0;
         std::vector<std::pair<double, double>> pts;
         for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) pts.emplace_back(R * (2.0 * i / (n - 1) - 1) + 1e-9 * R, R * (2.0 * j / (n - 1) - 1) + 2e-9 * R);
+            for (int j = 0; j < n; ++j)
+                pts.emplace_back(R * (2.0 * i / (n - 1) - 1) + 1e-9 * R, R * (2.0 * j / (n - 1) - 1) + 2e-9 * R);
         std::vector<int> regions(pts.size());
         const double t_region = kit::min_time([&] {
             for (std::size_t p = 0; p < pts.size(); ++p) regions[p] = rigid::region(b, pts[p].first, pts[p].second);
             kit::keep(regions);
         });
         std::vector<EigenMoments> eig(pts.size());
-        const double t_eigen = kit::min_time([&] {
-            for (std::size_t p = 0; p < pts.size(); ++p) {
-                const double L = std::hypot(pts[p].first, pts[p].second);
-                eig[p] = eigen_moments(tensor_at(b, L, Vec3(pts[p].first / L, 0, pts[p].second / L)));
-            }
-            kit::keep(eig);
-        }, 2);
+        const double t_eigen = kit::min_time(
+            [&] {
+                for (std::size_t p = 0; p < pts.size(); ++p) {
+                    const double L = std::hypot(pts[p].first, pts[p].second);
+                    eig[p] = eigen_moments(tensor_at(b, L, Vec3(pts[p].first / L, 0, pts[p].second / L)));
+                }
+                kit::keep(eig);
+            },
+            2);
         for (std::size_t p = 0; p < pts.size(); ++p) {
             if (regions[p] == 0) continue;
             ++checked;
@@ -75,24 +90,29 @@ int main(int argc, char** argv) {
             angle = std::max(angle, std::atan2(z.cross(nrm).norm(), std::abs(z.dot(nrm))));
         }
 
-        scene.report.headline("max |(5.7) - 1| where the eigen-solver finds B = C (bisection), over the lines", err_hyperbola,
-                              t_region / static_cast<double>(pts.size()));
+        scene.report.headline("max |(5.7) - 1| where the eigen-solver finds B = C (bisection), over the lines",
+                              err_hyperbola, t_region / static_cast<double>(pts.size()));
         scene.report.add("critical_cos2", crit, "(5.6)");
         scene.report.add("h_crit_rel_error", err_hcrit, "(5.8) rewritten, against the bisection");
         scene.report.add("h_crit_printed_rel_error", err_hcrit_printed, "(5.8) as printed, against the bisection");
         scene.report.add("region_points_checked", checked);
         scene.report.add("region_mismatches", mismatches, "region() against the order of Eigen's moments");
         scene.report.add("run_time_region_s", t_region / static_cast<double>(pts.size()), "per point");
-        scene.report.add("run_time_eigen_s", t_eigen / static_cast<double>(pts.size()), "per point, SelfAdjointEigenSolver");
-        scene.report.add("grioli_vs_circular_sections_rad", angle, "largest angle between (5.15) and the circular-section normals");
-        if (mismatches != 0) throw kit::NumericalFailure("region() disagrees with the eigen-solver at " + std::to_string(mismatches) + " points");
+        scene.report.add("run_time_eigen_s", t_eigen / static_cast<double>(pts.size()),
+                         "per point, SelfAdjointEigenSolver");
+        scene.report.add("grioli_vs_circular_sections_rad", angle,
+                         "largest angle between (5.15) and the circular-section normals");
+        if (mismatches != 0)
+            throw kit::NumericalFailure("region() disagrees with the eigen-solver at " + std::to_string(mismatches) +
+                                        " points");
 
         // Figure 5.
         kit::Figure fig(scene, "regions_plane.svg", 640, 720);
         if (!fig.enabled()) return;
         const double k = std::sqrt(dCB / dBA);
         auto hyp = [&](double x) { return std::sqrt(dCB / b.mu * (1 + b.mu * x * x / dBA)); };
-        std::vector<std::vector<double>> right, left, near_up, near_down, far_up, far_down, branch_up, branch_down, asym1, asym2;
+        std::vector<std::vector<double>> right, left, near_up, near_down, far_up, far_down, branch_up, branch_down,
+            asym1, asym2;
         const int m = 400;
         for (int i = 0; i <= m; ++i) {
             const double x = R * (2.0 * i / m - 1), ax = std::min(k * std::abs(x), R), hx = std::min(hyp(x), R);
@@ -123,23 +143,28 @@ int main(int argc, char** argv) {
         label("VI", 0.0, -0.5 * (std::min(yv, R) + R));
         const Vec3 n0 = 0.6 * R * normals[0], n1 = 0.6 * R * normals[1];
         fig << "set size ratio -1\nset xrange [" + std::to_string(-R) + ":" + std::to_string(R) + "]\nset yrange [" +
-                   std::to_string(-R) + ":" + std::to_string(R) + "]\n"
-               "set xlabel 'x_A (along the smallest axis at G)'\nset ylabel 'x_C (along the largest axis at G)'\n"
-               "set key below maxrows 3 box opaque\nset border 15\nunset grid\n"
-               "set style fill transparent solid 0.45 noborder\n"
+                   std::to_string(-R) + ":" + std::to_string(R) +
+                   "]\n"
+                   "set xlabel 'x_A (along the smallest axis at G)'\nset ylabel 'x_C (along the largest axis at G)'\n"
+                   "set key below maxrows 3 box opaque\nset border 15\nunset grid\n"
+                   "set style fill transparent solid 0.45 noborder\n"
             << labels
-            << "set arrow from 0,0 to " + std::to_string(n0.x()) + "," + std::to_string(n0.z()) + " lw 2.5 lc rgb '#CC79A7' front\n"
-               "set arrow from 0,0 to " + std::to_string(n1.x()) + "," + std::to_string(n1.z()) + " lw 2.5 lc rgb '#CC79A7' front\n"
-               "set label 'G' at 0,0 offset 0.6,-0.6 front\n"
-               "plot '-' using 1:2:3 with filledcurves lc rgb '#56B4E9' title 'I, II: A < B < C at every distance L', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#56B4E9' notitle, "
-               "'-' using 1:2:3 with filledcurves lc rgb '#009E73' title 'III, IV: A < B < C up to the hyperbola', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#009E73' notitle, "
-               "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' title 'V, VI: A < C < B', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' notitle, "
-               "'-' with lines ls 7 lw 2.5 title 'hyperbola (5.7): B = C', '-' with lines ls 7 lw 2.5 notitle, "
-               "'-' with lines ls 2 lw 2 dt 2 title 'Grioli lines (5.15)', '-' with lines ls 2 lw 2 dt 2 notitle, "
-               "NaN with lines lw 2.5 lc rgb '#CC79A7' title 'circular-section normals'\n";
+            << "set arrow from 0,0 to " + std::to_string(n0.x()) + "," + std::to_string(n0.z()) +
+                   " lw 2.5 lc rgb '#CC79A7' front\n"
+                   "set arrow from 0,0 to " +
+                   std::to_string(n1.x()) + "," + std::to_string(n1.z()) +
+                   " lw 2.5 lc rgb '#CC79A7' front\n"
+                   "set label 'G' at 0,0 offset 0.6,-0.6 front\n"
+                   "plot '-' using 1:2:3 with filledcurves lc rgb '#56B4E9' title 'I, II: A < B < C at every distance "
+                   "L', "
+                   "'-' using 1:2:3 with filledcurves lc rgb '#56B4E9' notitle, "
+                   "'-' using 1:2:3 with filledcurves lc rgb '#009E73' title 'III, IV: A < B < C up to the hyperbola', "
+                   "'-' using 1:2:3 with filledcurves lc rgb '#009E73' notitle, "
+                   "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' title 'V, VI: A < C < B', "
+                   "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' notitle, "
+                   "'-' with lines ls 7 lw 2.5 title 'hyperbola (5.7): B = C', '-' with lines ls 7 lw 2.5 notitle, "
+                   "'-' with lines ls 2 lw 2 dt 2 title 'Grioli lines (5.15)', '-' with lines ls 2 lw 2 dt 2 notitle, "
+                   "NaN with lines lw 2.5 lc rgb '#CC79A7' title 'circular-section normals'\n";
         fig.data(right).data(left).data(near_up).data(near_down).data(far_up).data(far_down);
         fig.data(branch_up).data(branch_down).data(asym1).data(asym2);
         fig.finish();

@@ -10,26 +10,40 @@
 #include <string>
 #include <vector>
 
-#include "reference/quad_inertia.hpp"
 #include "common.hpp"
 #include "figure.hpp"
+#include "reference/quad_inertia.hpp"
 
 using namespace ch6;
 
-int main(int argc, char** argv) {
-    kit::Options opts("tilt_on_grioli_lines",
-                      "Chapter 6: cos^2 phi against (B - A)/(C - A) along a Grioli line and off it, L from 1e-6 to 1e6 body sizes");
-    body_options(opts);
-    opts.integer("sign", 1, "which Grioli line, x_C = sign sqrt((C_g - B_g)/(B_g - A_g)) x_A", -1, 1)
-        .real("off", 0.1, "the angle (rad) by which the two other lines leave the Grioli line", kit::between(1e-12, 0.5))
-        .integer("points", 121, "distances, log-spaced over 12 decades", 13, 10001);
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    int sign = 1;
+    double off = 0.1;
+    int points = 121;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const BodyAtG b = body(o);
-        const int sign = static_cast<int>(o.integer("sign"));
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.integer("sign", &p.sign, "which Grioli line, x_C = sign sqrt((C_g - B_g)/(B_g - A_g)) x_A", -1, 1)
+        .real("off", &p.off, "the angle (rad) by which the two other lines leave the Grioli line",
+              kit::between(1e-12, 0.5))
+        .integer("points", &p.points, "distances, log-spaced over 12 decades", 13, 10001);
+}
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts(
+        "tilt_on_grioli_lines",
+        "Chapter 6: cos^2 phi against (B - A)/(C - A) along a Grioli line and off it, L from 1e-6 to 1e6 body sizes");
+    declare(opts, p);
+
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const BodyAtG b = body(p.body);
+        const int sign = p.sign;
         if (sign == 0) throw kit::BadInput("--sign: got 0; it must be +1 or -1");
-        const double off = o.real("off"), ell = size_of(b);
-        const int n = static_cast<int>(o.integer("points"));
+        const double off = p.off, ell = size_of(b);
+        const int n = p.points;
         const Vec3 zg = rigid::grioli_direction(b, sign);
         const double phi_line = std::atan2(zg.z(), zg.x());
         const Vec3 z_below = rigid::shift_direction(phi_line + sign * off);  // towards x_C: cos^2 phi_g smaller
@@ -44,7 +58,8 @@ int main(int argc, char** argv) {
             const rigid::GrioliSuspension g = rigid::grioli_suspension(b, L, sign);
             const auto r = quadref::moments(b.A_g, b.B_g, b.C_g, b.mu, L, qA, qC);
             err_ref = std::max({err_ref, quadref::rel_err(g.tilt.cos2, r.cos2), quadref::rel_err(g.tilt.sin2, r.sin2),
-                                quadref::rel_err(g.expected.cos2, r.BmA / r.CmA), quadref::rel_err(g.expected.sin2, r.CmB / r.CmA)});
+                                quadref::rel_err(g.expected.cos2, r.BmA / r.CmA),
+                                quadref::rel_err(g.expected.sin2, r.CmB / r.CmA)});
             self_ref = std::max({self_ref, static_cast<double>(quadref::abs_q(r.cos2 - r.BmA / r.CmA) / r.cos2),
                                  static_cast<double>(quadref::abs_q(r.sin2 - r.CmB / r.CmA) / r.sin2)});
             // The gap, relative to the smaller of sin^2 and (C - B)/(C - A): the digits that matter.
@@ -71,20 +86,27 @@ int main(int argc, char** argv) {
             rows.push_back(row);
         }
         const double t_closed = kit::min_time([&] {
-            double s = 0;
-            for (int i = 0; i < 1000; ++i) s += rigid::grioli_suspension(b, ell * (1 + 1e-3 * i), sign).tilt.sin2;
-            kit::keep(s);
-        }) / 1000;
+                                    double s = 0;
+                                    for (int i = 0; i < 1000; ++i)
+                                        s += rigid::grioli_suspension(b, ell * (1 + 1e-3 * i), sign).tilt.sin2;
+                                    kit::keep(s);
+                                }) /
+                                1000;
 
-        scene.report.headline("max relative error of cos^2, sin^2 phi and (B-A)/(C-A), (C-B)/(C-A) on the line, against binary128",
-                              err_ref, t_closed);
+        scene.report.headline(
+            "max relative error of cos^2, sin^2 phi and (B-A)/(C-A), (C-B)/(C-A) on the line, against binary128",
+            err_ref, t_closed);
         scene.report.add("grioli_cos2_phi_g", zg.x() * zg.x(), "(5.14)");
-        scene.report.add("on_line_gap_closed_forms", gap_closed, "max |sin^2 phi - (C-B)/(C-A)| / ((C-B)/(C-A)), L = 1e-6..1e6 sizes");
-        scene.report.add("on_line_gap_eigen", gap_eigen, "max |cos^2 phi - (B-A)/(C-A)| from Eigen's eigenvectors, L <= 100 sizes");
+        scene.report.add("on_line_gap_closed_forms", gap_closed,
+                         "max |sin^2 phi - (C-B)/(C-A)| / ((C-B)/(C-A)), L = 1e-6..1e6 sizes");
+        scene.report.add("on_line_gap_eigen", gap_eigen,
+                         "max |cos^2 phi - (B-A)/(C-A)| from Eigen's eigenvectors, L <= 100 sizes");
         scene.report.add("on_line_gap_binary128", self_ref, "the same identity in binary128");
-        scene.report.add("off_line_min_gap", min_gap_off, "smallest |cos^2 phi - (B-A)/(C-A)| off the line, over all L");
-        scene.report.table("sweep", {"L/size", "cos2_line", "ratio_line", "cos2_below", "ratio_below", "gap_below", "cos2_above",
-                                     "ratio_above", "gap_above", "rel_gap_line", "gap_line_eigen"},
+        scene.report.add("off_line_min_gap", min_gap_off,
+                         "smallest |cos^2 phi - (B-A)/(C-A)| off the line, over all L");
+        scene.report.table("sweep",
+                           {"L/size", "cos2_line", "ratio_line", "cos2_below", "ratio_below", "gap_below", "cos2_above",
+                            "ratio_above", "gap_above", "rel_gap_line", "gap_line_eigen"},
                            rows, false);
         if (!(err_ref <= 1e-13)) throw kit::NumericalFailure("the closed forms on the Grioli line lost digits");
 
@@ -92,19 +114,24 @@ int main(int argc, char** argv) {
         if (!fig.enabled()) return;
         const std::string off_text = std::to_string(off).substr(0, 6);
         fig << "set encoding utf8\nset multiplot layout 1,2\nset logscale x\nset format x '10^{%T}'\n"
-               "set xlabel 'distance L / body size √(C_g/μ)'\nset key at graph 0.98, graph 0.55 right bottom box opaque font ',10'\n"
-               "set title '(a) the two sides of Theorem 1''s condition (lines ± " + off_text + " rad off)'\nset ylabel 'cos^2 φ  and  (B - A)/(C - A)'\n"
-               "set yrange [0.5:1.02]\nset xrange [1e-2:1e2]\n"
-               "plot '-' using 1:2 with lines ls 3 lw 3 title 'on the line: cos^2 φ', "
-               "'' using 1:3 with lines ls 7 dt 2 title '      (B-A)/(C-A)', "
-               "'' using 1:4 with lines ls 1 title 'below: cos^2 φ', "
-               "'' using 1:5 with lines ls 1 dt 2 title '      (B-A)/(C-A)', "
-               "'' using 1:7 with lines ls 2 title 'above: cos^2 φ', "
-               "'' using 1:8 with lines ls 2 dt 2 title '      (B-A)/(C-A)'\n";
+               "set xlabel 'distance L / body size √(C_g/μ)'\nset key at graph 0.98, graph 0.55 right bottom box "
+               "opaque font ',10'\n"
+               "set title '(a) the two sides of Theorem 1''s condition (lines ± " +
+                   off_text +
+                   " rad off)'\nset ylabel 'cos^2 φ  and  (B - A)/(C - A)'\n"
+                   "set yrange [0.5:1.02]\nset xrange [1e-2:1e2]\n"
+                   "plot '-' using 1:2 with lines ls 3 lw 3 title 'on the line: cos^2 φ', "
+                   "'' using 1:3 with lines ls 7 dt 2 title '      (B-A)/(C-A)', "
+                   "'' using 1:4 with lines ls 1 title 'below: cos^2 φ', "
+                   "'' using 1:5 with lines ls 1 dt 2 title '      (B-A)/(C-A)', "
+                   "'' using 1:7 with lines ls 2 title 'above: cos^2 φ', "
+                   "'' using 1:8 with lines ls 2 dt 2 title '      (B-A)/(C-A)'\n";
         for (int rep = 0; rep < 6; ++rep) fig.data(rows);
         fig << "set title '(b) the gap |cos^2 φ - (B - A)/(C - A)|'\nset logscale y\nset format y '10^{%T}'\n"
-               "set ylabel 'gap'\nset yrange [1e-19:1e6]\nset xrange [1e-6:1e6]\nset key inside top right box opaque font ',10'\n"
-               "plot '-' using 1:6 with lines ls 1 title 'below the line', '' using 1:9 with lines ls 2 title 'above the line', "
+               "set ylabel 'gap'\nset yrange [1e-19:1e6]\nset xrange [1e-6:1e6]\nset key inside top right box opaque "
+               "font ',10'\n"
+               "plot '-' using 1:6 with lines ls 1 title 'below the line', '' using 1:9 with lines ls 2 title 'above "
+               "the line', "
                "'' using 1:11 with points ls 7 pt 6 title 'on the line, eigen-solver', "
                "'' using 1:10 with lines ls 3 lw 3 title 'on the line, closed forms, relative to sin^2 φ'\n";
         for (int rep = 0; rep < 4; ++rep) fig.data(rows);

@@ -316,11 +316,13 @@ int check_names(const fs::path& root) {
                     if (src == corpus.scene_sources.end()) {
                         problems.push_back(where + ": runs the scene '" + m[1].str() + "', but no chapters/*/" + m[1].str() + ".cpp exists");
                     } else {
-                        // The scene's own source, and the headers of its chapter folder (a
-                        // chapter may declare shared options in a common header).
+                        // The scene's own source, and the headers of its chapter folder and of
+                        // the scene kit (a chapter may declare shared options in a common
+                        // header; the body's moments --A --B --C are declared in kit/body.hpp).
                         std::string text = prose::read_text(src->second);
-                        for (const auto& e : fs::directory_iterator(fs::path(src->second).parent_path()))
-                            if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
+                        for (const auto& dir : {fs::path(src->second).parent_path(), root / "chapters" / "kit"})
+                            for (const auto& e : fs::directory_iterator(dir))
+                                if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
                         std::istringstream args(m[2].str());
                         for (std::string a; args >> a;) {
                             if (a.rfind("--", 0) != 0) continue;
