@@ -34,7 +34,9 @@ const std::vector<Stencil> stencils = {
     {"central, order 2", 2, {-1, 1}, {-0.5, 0.5}},
     {"central, order 4", 4, {-2, -1, 1, 2}, {1. / 12, -2. / 3, 2. / 3, -1. / 12}},
     {"central, order 6", 6, {-3, -2, -1, 1, 2, 3}, {-1. / 60, 3. / 20, -3. / 4, 3. / 4, -3. / 20, 1. / 60}},
-    {"central, order 8", 8, {-4, -3, -2, -1, 1, 2, 3, 4},
+    {"central, order 8",
+     8,
+     {-4, -3, -2, -1, 1, 2, 3, 4},
      {1. / 280, -4. / 105, 1. / 5, -4. / 5, 4. / 5, -1. / 5, 4. / 105, -1. / 280}},
 };
 
@@ -47,123 +49,164 @@ Vec3 omega_fd(const Vec3& a, double alpha, double t, double h, const Stencil& s)
 }
 // end snippet
 
+struct Params {
+    Vec3 axis = Vec3(1, 2, 2);
+    double alpha = 1.3, t = 0.7;
+    double hmin = 1e-12, hmax = 0.3;
+    int points = 45;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.vector("axis", &p.axis, "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
+        .real("alpha", &p.alpha, "rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("t", &p.t, "the instant at which Omega is recovered (|alpha t| <= 10)", kit::between(-1e6, 1e6))
+        .real("hmin", &p.hmin, "smallest step of the sweep", kit::between(1e-16, 1e3))
+        .real("hmax", &p.hmax, "largest step of the sweep", kit::between(1e-16, 1e3))
+        .integer("points", &p.points, "steps in the sweep (log-spaced)", 5, 400);
+}
+
+void check(const kit::Options& o, const Params& p) {
+    if (!(p.hmin < p.hmax)) throw kit::BadInput("--hmin must be smaller than --hmax");
+    // The stencil evaluates R at alpha (t + j h): far from t = 0 the sum t + j h keeps fewer
+    // of the digits of h (its round-off is eps |t| / h, not eps / (alpha h)), and the
+    // floors predicted below would be wrong.
+    if (!(std::abs(p.alpha * p.t) <= 10))
+        throw kit::BadInput("--t, --alpha: |alpha t| = " + std::to_string(std::abs(p.alpha * p.t)) +
+                            "; it must be at most 10 (further out t + h loses the digits of h)");
+    kit::require_budget(o, {double(p.points) * 30 + 5 * 2000 * 30, 2e-7, "rotations R(t)", "--points"});
+}
+
+// The sweep: relative error |Omega_fd - alpha a| / alpha for every stencil and step, and the
+// run time of one recovery at each stencil's best step.
+struct Sweep {
+    Vec3 a;
+    std::vector<std::vector<double>> rows;  // h, then the error of each stencil
+    std::vector<double> best_err, best_h, time_per;
+};
+
+Sweep compute(const Params& p) {
+    Sweep sw{p.axis.normalized(),
+             {},
+             std::vector<double>(stencils.size(), 1e300),
+             std::vector<double>(stencils.size(), 0),
+             std::vector<double>(stencils.size())};
+    const Vec3 exact = p.alpha * sw.a;  // [P, (1.2)]
+    for (int k = 0; k < p.points; ++k) {
+        const double h = p.hmin * std::pow(p.hmax / p.hmin, double(k) / (p.points - 1));
+        std::vector<double> row{h};
+        for (std::size_t s = 0; s < stencils.size(); ++s) {
+            const double err = (omega_fd(sw.a, p.alpha, p.t, h, stencils[s]) - exact).norm() / p.alpha;
+            row.push_back(err);
+            if (err < sw.best_err[s]) sw.best_err[s] = err, sw.best_h[s] = h;
+        }
+        sw.rows.push_back(row);
+    }
+    // Run time of one recovery of Omega at each stencil's best step (min of 5 batches).
+    const int batch = 2000;
+    for (std::size_t s = 0; s < stencils.size(); ++s) {
+        sw.time_per[s] = kit::min_time([&] {
+                             Vec3 sum = Vec3::Zero();
+                             for (int n = 0; n < batch; ++n)
+                                 sum += omega_fd(sw.a, p.alpha, p.t + 1e-9 * n, sw.best_h[s], stencils[s]);
+                             kit::keep(sum);
+                         }) /
+                         batch;
+    }
+    return sw;
+}
+
+// What one more evaluation of R costs: the least-squares slope of the run time against the
+// number of evaluations, over the central formulas (2, 4, 6, 8 evaluations).
+double time_per_evaluation(const std::vector<double>& time_per) {
+    double n_mean = 0, t_mean = 0, cov = 0, var = 0;
+    for (std::size_t s = 1; s < stencils.size(); ++s)
+        n_mean += double(stencils[s].offsets.size()), t_mean += time_per[s];
+    n_mean /= double(stencils.size() - 1), t_mean /= double(stencils.size() - 1);
+    for (std::size_t s = 1; s < stencils.size(); ++s) {
+        const double dn = double(stencils[s].offsets.size()) - n_mean;
+        cov += dn * (time_per[s] - t_mean), var += dn * dn;
+    }
+    return cov / var;
+}
+
+// Theory: truncation ~ (alpha h)^p, round-off ~ eps / (alpha h); balanced at
+// alpha h ~ eps^(1/(p+1)), which leaves a floor ~ eps^(p/(p+1)).
+void report(kit::Scene& scene, const Params& p, const Sweep& sw) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    const std::size_t c2 = 1;  // the classic central difference carries the headline
+    scene.report.headline("min over h of |Omega_fd - alpha a| / alpha, central difference of order 2", sw.best_err[c2],
+                          sw.time_per[c2]);
+    scene.report.add("axis", sw.a);
+    scene.report.add("alpha", p.alpha);
+    std::vector<std::vector<double>> summary;
+    for (std::size_t s = 0; s < stencils.size(); ++s) {
+        const int order = stencils[s].order;
+        summary.push_back({double(order), double(stencils[s].offsets.size()), sw.best_h[s], sw.best_err[s],
+                           std::pow(eps, 1.0 / (order + 1)) / p.alpha, std::pow(eps, double(order) / (order + 1)),
+                           sw.time_per[s]});
+    }
+    scene.report.table("by_stencil",
+                       {"order", "evaluations", "best_h", "best_error", "predicted_h", "predicted_floor", "time_s"},
+                       summary);
+    scene.report.add("time_per_evaluation_s", time_per_evaluation(sw.time_per),
+                     "run time of one more evaluation of R in a stencil");
+    scene.report.table("sweep", {"h", "order1", "order2", "order4", "order6", "order8"}, sw.rows, false);
+    scene.report.note("central order 2: best step " + std::to_string(sw.best_h[c2]) +
+                      ", theory eps^(1/3)/alpha = " + std::to_string(std::cbrt(eps) / p.alpha));
+}
+
+void draw_error_vs_step(kit::Scene& scene, const Params& p, const Sweep& sw) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    kit::Figure fig(scene, "omega_fd_error_vs_step.svg");
+    fig << "set title 'Ω from finite differences of R(t): truncation meets round-off'\n"
+           "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+           "set xlabel 'step h'\nset ylabel '|Ω_{fd} − α{/:Bold a}| / α'\n"
+           "set key at graph 0.36, 0.97 left top\nset yrange [1e-17:10]\n";
+    std::string plot = "plot ";
+    for (std::size_t s = 0; s < stencils.size(); ++s)
+        plot += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
+    plot += "'-' using 1:2 with lines ls 9 title 'round-off, ε / (αh)'\n";
+    fig << plot;
+    for (std::size_t s = 0; s < stencils.size(); ++s) {
+        std::vector<std::vector<double>> col;
+        for (const auto& r : sw.rows) col.push_back({r[0], std::max(r[s + 1], 1e-17)});
+        fig.data(col);
+    }
+    fig.data({{p.hmin, eps / (p.alpha * p.hmin)}, {p.hmax, eps / (p.alpha * p.hmax)}});
+    fig.finish();
+}
+
+void draw_error_vs_time(kit::Scene& scene, const Sweep& sw) {
+    kit::Figure wp(scene, "omega_fd_error_vs_time.svg");
+    wp << "set title 'Best error against run time per recovery of Ω (labels: order)'\n"
+          "set logscale y\nset format y '10^{%L}'\nset xlabel 'run time per recovery of Ω (ns)'\n"
+          "set ylabel 'best |Ω_{fd} − α{/:Bold a}| / α'\nset key top right\n"
+          "set offsets graph 0.15, graph 0.15, graph 0.3, graph 0.3\n"
+          "plot '-' using 1:2 with linespoints ls 1 title 'central, orders 2-8', "
+          "'-' using 1:2 with points ls 2 ps 1.2 title 'forward, order 1', "
+          "'-' using 1:2:(sprintf('%d', $3)) with labels offset 1.2, 0.8 notitle\n";
+    std::vector<std::vector<double>> central;
+    for (std::size_t s = 1; s < stencils.size(); ++s) central.push_back({1e9 * sw.time_per[s], sw.best_err[s]});
+    wp.data(central).data({{1e9 * sw.time_per[0], sw.best_err[0]}});
+    std::vector<std::vector<double>> lab;
+    for (std::size_t s = 0; s < stencils.size(); ++s)
+        lab.push_back({1e9 * sw.time_per[s], sw.best_err[s], double(stencils[s].order)});
+    wp.data(lab);
+    wp.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("omega_finite_difference",
                       "Chapter 1: Omega from finite differences of R(t), error against step and run time");
-    opts.vector("axis", Vec3(1, 2, 2), "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
-        .real("alpha", 1.3, "rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("t", 0.7, "the instant at which Omega is recovered (|alpha t| <= 10)", kit::between(-1e6, 1e6))
-        .real("hmin", 1e-12, "smallest step of the sweep", kit::between(1e-16, 1e3))
-        .real("hmax", 0.3, "largest step of the sweep", kit::between(1e-16, 1e3))
-        .integer("points", 45, "steps in the sweep (log-spaced)", 5, 400);
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const Vec3 a = o.vector("axis").normalized();
-        const double alpha = o.real("alpha"), t = o.real("t");
-        const double hmin = o.real("hmin"), hmax = o.real("hmax");
-        const int points = static_cast<int>(o.integer("points"));
-        if (!(hmin < hmax)) throw kit::BadInput("--hmin must be smaller than --hmax");
-        // The stencil evaluates R at alpha (t + j h): far from t = 0 the sum t + j h keeps fewer
-        // of the digits of h (its round-off is eps |t| / h, not eps / (alpha h)), and the
-        // floors predicted below would be wrong.
-        if (!(std::abs(alpha * t) <= 10))
-            throw kit::BadInput("--t, --alpha: |alpha t| = " + std::to_string(std::abs(alpha * t)) +
-                                "; it must be at most 10 (further out t + h loses the digits of h)");
-        kit::require_budget(o, {double(points) * 30 + 5 * 2000 * 30, 2e-7, "rotations R(t)", "--points"});
-        const Vec3 exact = alpha * a;   // [P, (1.2)]
-        const double eps = std::numeric_limits<double>::epsilon();
-
-        // The sweep: relative error |Omega_fd - alpha a| / alpha for every stencil and step.
-        std::vector<std::vector<double>> rows;
-        std::vector<double> best_err(stencils.size(), 1e300), best_h(stencils.size(), 0);
-        for (int k = 0; k < points; ++k) {
-            const double h = hmin * std::pow(hmax / hmin, double(k) / (points - 1));
-            std::vector<double> row{h};
-            for (std::size_t s = 0; s < stencils.size(); ++s) {
-                const double err = (omega_fd(a, alpha, t, h, stencils[s]) - exact).norm() / alpha;
-                row.push_back(err);
-                if (err < best_err[s]) best_err[s] = err, best_h[s] = h;
-            }
-            rows.push_back(row);
-        }
-
-        // Run time of one recovery of Omega at each stencil's best step (min of 5 batches).
-        const int batch = 2000;
-        std::vector<double> time_per(stencils.size());
-        for (std::size_t s = 0; s < stencils.size(); ++s) {
-            time_per[s] = kit::min_time([&] {
-                Vec3 sum = Vec3::Zero();
-                for (int n = 0; n < batch; ++n) sum += omega_fd(a, alpha, t + 1e-9 * n, best_h[s], stencils[s]);
-                kit::keep(sum);
-            }) / batch;
-        }
-
-        // Theory: truncation ~ (alpha h)^p, round-off ~ eps / (alpha h); balanced at
-        // alpha h ~ eps^(1/(p+1)), which leaves a floor ~ eps^(p/(p+1)).
-        const std::size_t c2 = 1;  // the classic central difference carries the headline
-        scene.report.headline("min over h of |Omega_fd - alpha a| / alpha, central difference of order 2",
-                              best_err[c2], time_per[c2]);
-        scene.report.add("axis", a);
-        scene.report.add("alpha", alpha);
-        std::vector<std::vector<double>> summary;
-        for (std::size_t s = 0; s < stencils.size(); ++s) {
-            const int p = stencils[s].order;
-            summary.push_back({double(p), double(stencils[s].offsets.size()), best_h[s], best_err[s],
-                               std::pow(eps, 1.0 / (p + 1)) / alpha, std::pow(eps, double(p) / (p + 1)), time_per[s]});
-        }
-        scene.report.table("by_stencil",
-                           {"order", "evaluations", "best_h", "best_error", "predicted_h", "predicted_floor", "time_s"},
-                           summary);
-        // What one more evaluation of R costs: the least-squares slope of the run time against
-        // the number of evaluations, over the central formulas (2, 4, 6, 8 evaluations).
-        double n_mean = 0, t_mean = 0, cov = 0, var = 0;
-        for (std::size_t s = 1; s < stencils.size(); ++s)
-            n_mean += double(stencils[s].offsets.size()), t_mean += time_per[s];
-        n_mean /= double(stencils.size() - 1), t_mean /= double(stencils.size() - 1);
-        for (std::size_t s = 1; s < stencils.size(); ++s) {
-            const double dn = double(stencils[s].offsets.size()) - n_mean;
-            cov += dn * (time_per[s] - t_mean), var += dn * dn;
-        }
-        scene.report.add("time_per_evaluation_s", cov / var, "run time of one more evaluation of R in a stencil");
-        scene.report.table("sweep", {"h", "order1", "order2", "order4", "order6", "order8"}, rows, false);
-        scene.report.note("central order 2: best step " + std::to_string(best_h[c2]) + ", theory eps^(1/3)/alpha = " +
-                          std::to_string(std::cbrt(eps) / alpha));
-
-        kit::Figure fig(scene, "omega_fd_error_vs_step.svg");
-        fig << "set title 'Ω from finite differences of R(t): truncation meets round-off'\n"
-               "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set xlabel 'step h'\nset ylabel '|Ω_{fd} − α{/:Bold a}| / α'\n"
-               "set key at graph 0.36, 0.97 left top\nset yrange [1e-17:10]\n";
-        std::string plot = "plot ";
-        for (std::size_t s = 0; s < stencils.size(); ++s)
-            plot += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
-        plot += "'-' using 1:2 with lines ls 9 title 'round-off, ε / (αh)'\n";
-        fig << plot;
-        for (std::size_t s = 0; s < stencils.size(); ++s) {
-            std::vector<std::vector<double>> col;
-            for (const auto& r : rows) col.push_back({r[0], std::max(r[s + 1], 1e-17)});
-            fig.data(col);
-        }
-        fig.data({{hmin, eps / (alpha * hmin)}, {hmax, eps / (alpha * hmax)}});
-        fig.finish();
-
-        kit::Figure wp(scene, "omega_fd_error_vs_time.svg");
-        wp << "set title 'Best error against run time per recovery of Ω (labels: order)'\n"
-              "set logscale y\nset format y '10^{%L}'\nset xlabel 'run time per recovery of Ω (ns)'\n"
-              "set ylabel 'best |Ω_{fd} − α{/:Bold a}| / α'\nset key top right\n"
-              "set offsets graph 0.15, graph 0.15, graph 0.3, graph 0.3\n"
-              "plot '-' using 1:2 with linespoints ls 1 title 'central, orders 2-8', "
-              "'-' using 1:2 with points ls 2 ps 1.2 title 'forward, order 1', "
-              "'-' using 1:2:(sprintf('%d', $3)) with labels offset 1.2, 0.8 notitle\n";
-        std::vector<std::vector<double>> central;
-        for (std::size_t s = 1; s < stencils.size(); ++s) central.push_back({1e9 * time_per[s], best_err[s]});
-        wp.data(central).data({{1e9 * time_per[0], best_err[0]}});
-        std::vector<std::vector<double>> lab;
-        for (std::size_t s = 0; s < stencils.size(); ++s)
-            lab.push_back({1e9 * time_per[s], best_err[s], double(stencils[s].order)});
-        wp.data(lab);
-        wp.finish();
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        check(o, p);
+        const Sweep sw = compute(p);
+        report(scene, p, sw);
+        draw_error_vs_step(scene, p, sw);
+        draw_error_vs_time(scene, sw);
     });
 }

@@ -22,7 +22,8 @@ namespace {
 std::vector<Vec3> box_corners(const Vec3& centre, const Vec3& half) {
     std::vector<Vec3> corners;
     for (int i = 0; i < 8; ++i)
-        corners.push_back(centre + Vec3((i & 1 ? 1 : -1) * half.x(), (i & 2 ? 1 : -1) * half.y(), (i & 4 ? 1 : -1) * half.z()));
+        corners.push_back(centre +
+                          Vec3((i & 1 ? 1 : -1) * half.x(), (i & 2 ? 1 : -1) * half.y(), (i & 4 ? 1 : -1) * half.z()));
     return corners;
 }
 
@@ -35,93 +36,123 @@ std::vector<std::pair<int, int>> box_edges() {
     return edges;
 }
 
+struct Params {
+    Vec3 axis = Vec3(0.25, 0.35, 1.0);
+    double alpha = 1.0;
+    int frames = 5;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.vector("axis", &p.axis, "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
+        .real("alpha", &p.alpha, "rotation frequency alpha", kit::between(1e-6, 1e6))
+        .integer("frames", &p.frames, "instants drawn over one turn", 2, 36);
+    // The work is fixed (361 rotations of 8 corners, 5 times): far below any budget.
+}
+
+// Every corner of the body at every instant of a finely sampled turn.
+struct Turn {
+    Vec3 a;         // the axis, normalised
+    double period;  // 2 pi / alpha
+    std::vector<Vec3> corners;
+    std::vector<std::vector<Vec3>> path;  // path[c][k]: corner c at t = k T / samples
+    double run_time;
+};
+constexpr int samples = 360;
+
+Turn compute(const Params& p) {
+    Turn turn{p.axis.normalized(),
+              2 * std::numbers::pi / p.alpha,
+              box_corners(Vec3(1.3, 0.0, 0.2), Vec3(0.35, 0.12, 0.12)),
+              {},
+              0};
+    turn.path.resize(turn.corners.size());
+    auto rotate_all = [&] {
+        for (int k = 0; k <= samples; ++k) {
+            const Mat3 R = rigid::rotation_about(turn.a, p.alpha * turn.period * k / samples);
+            for (std::size_t c = 0; c < turn.corners.size(); ++c) turn.path[c].push_back(R * turn.corners[c]);
+        }
+    };
+    turn.run_time = kit::min_time([&] {
+        for (auto& x : turn.path) x.clear();
+        rotate_all();
+        kit::keep(turn.path);
+    });
+    return turn;
+}
+
+// Against Eigen's independent AngleAxis, and the circle invariants about a.
+void report(kit::Scene& scene, const Params& p, const Turn& turn) {
+    const Vec3& a = turn.a;
+    double err_eigen = 0, err_height = 0, err_radius = 0;
+    for (std::size_t c = 0; c < turn.corners.size(); ++c) {
+        const Vec3& x0 = turn.corners[c];
+        const double height = a.dot(x0), radius = (x0 - height * a).norm();
+        for (int k = 0; k <= samples; ++k) {
+            const double phi = p.alpha * turn.period * k / samples;
+            const Vec3& x = turn.path[c][k];
+            const Vec3 ref = Eigen::AngleAxisd(phi, a) * x0;
+            err_eigen = std::max(err_eigen, (x - ref).norm() / x0.norm());
+            err_height = std::max(err_height, std::abs(a.dot(x) - height) / x0.norm());
+            err_radius = std::max(err_radius, std::abs((x - a.dot(x) * a).norm() - radius) / x0.norm());
+        }
+    }
+    scene.report.headline("max |R^a(alpha t) x - AngleAxis(alpha t, a) x| / |x| over the corners of one turn",
+                          err_eigen, turn.run_time);
+    scene.report.add("axis", a, "a, normalised");
+    scene.report.add("alpha", p.alpha);
+    scene.report.add("rotations_evaluated", static_cast<long>(samples + 1));
+    scene.report.add("height_drift", err_height, "max |a.x(t) - a.x(0)| / |x|");
+    scene.report.add("radius_drift", err_radius, "max change of the distance from the axis / |x|");
+    scene.report.add("run_time_per_rotation_s", turn.run_time / (samples + 1));
+}
+
+// The edges of the box rotated by R, as separate segments.
+void add_edges(std::vector<std::vector<double>>& rows, const Mat3& R, const std::vector<Vec3>& corners) {
+    for (auto [i, j] : box_edges()) {
+        const Vec3 p = R * corners[i], q = R * corners[j];
+        rows.push_back({p.x(), p.y(), p.z()});
+        rows.push_back({q.x(), q.y(), q.z()});
+        rows.push_back({});
+        rows.push_back({});
+    }
+}
+
+void draw(kit::Scene& scene, const Params& p, const Turn& turn) {
+    kit::Figure fig(scene, "pure_rotation.svg", 760, 620);
+    if (!fig.enabled()) return;
+    const Vec3& a = turn.a;
+    fig << "set view 58, 32, 1.0, 1.2\nset view equal xyz\nset xyplane 0\nset border 4095\n"
+           "set xlabel 'e_1'\nset ylabel 'e_2'\nset zlabel 'e_3'\nset key at screen 0.01, 0.99 top left\n"
+           "unset grid\nset xtics 1\nset ytics 1\nset ztics 1\n";
+    fig << "splot '-' with lines ls 7 lw 2.5 title 'axis a', "
+           "'-' with lines ls 8 lw 1 title 'paths of the corners', "
+           "'-' with lines ls 1 lw 1.2 title 'body at t_k = k T / " +
+               std::to_string(p.frames) +
+               "', "
+               "'-' with lines ls 2 lw 2.5 title 'body at t = 0'\n";
+    fig.data({{-1.2 * a.x(), -1.2 * a.y(), -1.2 * a.z()}, {1.6 * a.x(), 1.6 * a.y(), 1.6 * a.z()}});
+    std::vector<std::vector<double>> paths, bodies, first;
+    for (const auto& path : turn.path) {
+        for (const Vec3& x : path) paths.push_back({x.x(), x.y(), x.z()});
+        paths.push_back({});  // two blank lines: separate curves, not one mesh
+        paths.push_back({});
+    }
+    for (int f = 1; f < p.frames; ++f)
+        add_edges(bodies, rigid::rotation_about(a, p.alpha * turn.period * f / p.frames), turn.corners);
+    add_edges(first, Mat3::Identity(), turn.corners);
+    fig.data(paths).data(bodies).data(first);
+    fig.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("pure_rotation", "Chapter 1: the points of a body under a pure rotation R^a(alpha t)");
-    opts.vector("axis", Vec3(0.25, 0.35, 1.0), "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
-        .real("alpha", 1.0, "rotation frequency alpha", kit::between(1e-6, 1e6))
-        .integer("frames", 5, "instants drawn over one turn", 2, 36);
-    // The work is fixed (361 rotations of 8 corners, 5 times): far below any budget.
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const Vec3 a = o.vector("axis").normalized();
-        const double alpha = o.real("alpha");
-        const int frames = static_cast<int>(o.integer("frames"));
-        const double period = 2 * std::numbers::pi / alpha;
-        const std::vector<Vec3> corners = box_corners(Vec3(1.3, 0.0, 0.2), Vec3(0.35, 0.12, 0.12));
-
-        // Every corner at every instant of a finely sampled turn.
-        const int samples = 360;
-        std::vector<std::vector<Vec3>> path(corners.size());
-        auto rotate_all = [&] {
-            for (int k = 0; k <= samples; ++k) {
-                const Mat3 R = rigid::rotation_about(a, alpha * period * k / samples);
-                for (std::size_t c = 0; c < corners.size(); ++c) path[c].push_back(R * corners[c]);
-            }
-        };
-        const double run_time = kit::min_time([&] {
-            for (auto& p : path) p.clear();
-            rotate_all();
-            kit::keep(path);
-        });
-
-        // Against Eigen's independent AngleAxis, and the circle invariants about a.
-        double err_eigen = 0, err_height = 0, err_radius = 0;
-        for (std::size_t c = 0; c < corners.size(); ++c) {
-            const Vec3& x0 = corners[c];
-            const double height = a.dot(x0), radius = (x0 - height * a).norm();
-            for (int k = 0; k <= samples; ++k) {
-                const double phi = alpha * period * k / samples;
-                const Vec3& x = path[c][k];
-                const Vec3 ref = Eigen::AngleAxisd(phi, a) * x0;
-                err_eigen = std::max(err_eigen, (x - ref).norm() / x0.norm());
-                err_height = std::max(err_height, std::abs(a.dot(x) - height) / x0.norm());
-                err_radius = std::max(err_radius, std::abs((x - a.dot(x) * a).norm() - radius) / x0.norm());
-            }
-        }
-        scene.report.headline("max |R^a(alpha t) x - AngleAxis(alpha t, a) x| / |x| over the corners of one turn",
-                              err_eigen, run_time);
-        scene.report.add("axis", a, "a, normalised");
-        scene.report.add("alpha", alpha);
-        scene.report.add("rotations_evaluated", static_cast<long>(samples + 1));
-        scene.report.add("height_drift", err_height, "max |a.x(t) - a.x(0)| / |x|");
-        scene.report.add("radius_drift", err_radius, "max change of the distance from the axis / |x|");
-        scene.report.add("run_time_per_rotation_s", run_time / (samples + 1));
-
-        kit::Figure fig(scene, "pure_rotation.svg", 760, 620);
-        if (!fig.enabled()) return;
-        fig << "set view 58, 32, 1.0, 1.2\nset view equal xyz\nset xyplane 0\nset border 4095\n"
-               "set xlabel 'e_1'\nset ylabel 'e_2'\nset zlabel 'e_3'\nset key at screen 0.01, 0.99 top left\n"
-               "unset grid\nset xtics 1\nset ytics 1\nset ztics 1\n";
-        fig << "splot '-' with lines ls 7 lw 2.5 title 'axis a', "
-               "'-' with lines ls 8 lw 1 title 'paths of the corners', "
-               "'-' with lines ls 1 lw 1.2 title 'body at t_k = k T / " + std::to_string(frames) + "', "
-               "'-' with lines ls 2 lw 2.5 title 'body at t = 0'\n";
-        fig.data({{-1.2 * a.x(), -1.2 * a.y(), -1.2 * a.z()}, {1.6 * a.x(), 1.6 * a.y(), 1.6 * a.z()}});
-        std::vector<std::vector<double>> paths, bodies, first;
-        for (const auto& p : path) {
-            for (const Vec3& x : p) paths.push_back({x.x(), x.y(), x.z()});
-            paths.push_back({});  // two blank lines: separate curves, not one mesh
-            paths.push_back({});
-        }
-        for (int f = 1; f < frames; ++f) {
-            const Mat3 R = rigid::rotation_about(a, alpha * period * f / frames);
-            for (auto [i, j] : box_edges()) {
-                const Vec3 p = R * corners[i], q = R * corners[j];
-                bodies.push_back({p.x(), p.y(), p.z()});
-                bodies.push_back({q.x(), q.y(), q.z()});
-                bodies.push_back({});
-                bodies.push_back({});
-            }
-        }
-        for (auto [i, j] : box_edges()) {
-            first.push_back({corners[i].x(), corners[i].y(), corners[i].z()});
-            first.push_back({corners[j].x(), corners[j].y(), corners[j].z()});
-            first.push_back({});
-            first.push_back({});
-        }
-        fig.data(paths).data(bodies).data(first);
-        fig.finish();
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const Turn turn = compute(p);
+        report(scene, p, turn);
+        draw(scene, p, turn);
     });
 }

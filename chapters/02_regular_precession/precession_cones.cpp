@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "figure.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
-#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -30,119 +30,166 @@ Vec3 omega_fd(const RegularPrecession& p, double t, double h) {
 
 std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
 
+// The three precessions: the angle between a and b (degrees), alpha and beta of each.
+struct Case {
+    double angle, alpha, beta;
+};
+struct Params {
+    Case given[3] = {{90, 1.0, 1.0}, {35, 2.0, 0.7}, {125, 0.6, 1.5}};
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.real("angle1", &p.given[0].angle, "case 1: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha1", &p.given[0].alpha, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta1", &p.given[0].beta, "case 1: precession frequency beta", kit::between(1e-6, 1e6))
+        .real("angle2", &p.given[1].angle, "case 2: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha2", &p.given[1].alpha, "case 2: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta2", &p.given[1].beta, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
+        .real("angle3", &p.given[2].angle, "case 3: angle between a and b (degrees)", kit::between(1, 179))
+        .real("alpha3", &p.given[2].alpha, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
+        .real("beta3", &p.given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
+}
+
+std::vector<RegularPrecession> precessions(const Params& prm) {
+    const Vec3 b = Vec3::UnitZ();
+    std::vector<RegularPrecession> cases;
+    for (int c = 1; c <= 3; ++c) {
+        const Case& g = prm.given[c - 1];
+        const double th = g.angle * std::numbers::pi / 180;
+        cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), g.alpha, b, g.beta});
+        // omega is checked by differences of R over h = 0.02 / (alpha + beta) at times up to
+        // 2 pi / beta: for alpha >> beta the sum t + j h keeps only the leading digits of h.
+        const double ratio = cases.back().alpha / cases.back().beta;
+        if (!(ratio <= 1e3 && ratio >= 1e-3))
+            throw kit::BadInput("--alpha" + std::to_string(c) + ", --beta" + std::to_string(c) +
+                                ": alpha / beta = " + std::to_string(ratio) +
+                                "; it must be between 1e-3 and 1e3 (the finite differences of R "
+                                "lose their digits beyond)");
+    }
+    return cases;
+}
+
+constexpr int n = 240;  // instants over one precession period
+
+// One case: omega(t) over a precession period (closed form, timed), and its checks against the
+// finite differences of R: angle(a, b), alpha, beta, omega error, the deviations of (b, omega)
+// and |omega|^2, and where the cones touch.
+struct CaseResult {
+    std::vector<Vec3> omega;
+    std::vector<double> row;
+    double run_time;
+};
+
+CaseResult compute(const RegularPrecession& p) {
+    const double Tb = 2 * std::numbers::pi / p.beta;
+    const double h = 0.02 / (p.alpha + p.beta);
+    CaseResult r{std::vector<Vec3>(n + 1), {}, 0};
+    r.run_time = kit::min_time([&] {
+                     for (int k = 0; k <= n; ++k) r.omega[k] = rigid::precession_lab_angular_velocity(p, Tb * k / n);
+                     kit::keep(r.omega);
+                 }) /
+                 (n + 1);
+    const double axial = p.beta + p.alpha * p.a.dot(p.b), w2 = rigid::precession_omega_squared(p);
+    double e = 0, dev_axial = 0, dev_norm = 0;
+    for (int k = 0; k <= n; k += 4) {
+        const Vec3 ref = omega_fd(p, Tb * k / n, h);
+        e = std::max(e, (r.omega[k] - ref).norm() / ref.norm());
+        dev_axial = std::max(dev_axial, std::abs(p.b.dot(ref) - axial));
+        dev_norm = std::max(dev_norm, std::abs(ref.squaredNorm() - w2));
+    }
+    const double t_star = 0.3 * Tb;
+    const Mat3 Rs = rigid::precession_rotation(p, t_star);
+    // Where the two cones touch: omega(t*) and R(t*) Omega(t*) must be the same vector.
+    const double touch =
+        (Rs * rigid::precession_body_angular_velocity(p, t_star) - rigid::precession_lab_angular_velocity(p, t_star))
+            .norm();
+    const double ab = p.a.dot(p.b);
+    r.row = {std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta, e, dev_axial, dev_norm, touch};
+    return r;
+}
+
+// A cone: its rim through `rim`, and a ray from the origin to every 12th point.
+void cone(const std::vector<Vec3>& rim_points, std::vector<std::vector<double>>& rays,
+          std::vector<std::vector<double>>& rim) {
+    for (std::size_t k = 0; k < rim_points.size(); ++k) {
+        rim.push_back(row(rim_points[k]));
+        if (k % 12 == 0) {
+            rays.push_back({0, 0, 0});
+            rays.push_back(row(rim_points[k]));
+            rays.push_back({});
+            rays.push_back({});
+        }
+    }
+}
+
+void draw_case(kit::Figure& fig, const RegularPrecession& p, const CaseResult& r) {
+    const double Tb = 2 * std::numbers::pi / p.beta, Ta = 2 * std::numbers::pi / p.alpha;
+    const double t_star = 0.3 * Tb;
+    const Mat3 Rs = rigid::precession_rotation(p, t_star);
+    // Space cone: rays to omega(t) over one precession period, and its rim.
+    std::vector<std::vector<double>> space_rays, space_rim, body_rays, body_rim, path, contact;
+    cone(r.omega, space_rays, space_rim);
+    // Body cone at t*: Omega(s) for one rotation period, carried by R(t*).
+    std::vector<Vec3> body(n + 1);
+    for (int k = 0; k <= n; ++k) body[k] = Rs * rigid::precession_body_angular_velocity(p, Ta * k / n);
+    cone(body, body_rays, body_rim);
+    // A body point on the unit sphere, off both axes, over several precession periods.
+    const Vec3 x0 = (p.a.unitOrthogonal() + 0.6 * p.a).normalized() * std::sqrt(rigid::precession_omega_squared(p));
+    for (int k = 0; k <= 600; ++k) path.push_back(row(rigid::precession_rotation(p, Tb * k / 600) * x0));
+    const Vec3 ws = rigid::precession_lab_angular_velocity(p, t_star);
+    contact = {{0, 0, 0}, row(ws)};
+    char title[160];
+    std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  α = %.2g;  β = %.2g",
+                  std::acos(p.a.dot(p.b)) * 180 / std::numbers::pi, p.alpha, p.beta);
+    fig << "set title " + kit::quoted(title) + "\n";
+    fig << "splot '-' with lines ls 8 lw 0.8, '-' with lines ls 1 lw 2, '-' with lines ls 6 lw 0.8, "
+           "'-' with lines ls 2 lw 2, '-' with lines ls 3 lw 1, '-' with lines ls 7 lw 3\n";
+    fig.data(space_rays).data(space_rim).data(body_rays).data(body_rim).data(path).data(contact);
+}
+
+void draw(kit::Scene& scene, const std::vector<RegularPrecession>& cases, const std::vector<CaseResult>& results) {
+    kit::Figure fig(scene, "precession_cones.svg", 1200, 460);
+    if (!fig.enabled()) return;
+    fig << "set multiplot layout 1, 3 title 'Space cone (about b, fixed), body cone (about R(t*)a, carried by the "
+           "body) "
+           "and the path of a body point'\n"
+           "set view 68, 30, 1.0, 1.25\nset view equal xyz\nset xyplane 0\nunset grid\nunset key\n"
+           "set xtics 1\nset ytics 1\nset ztics 1\nset border 4095\n";
+    for (std::size_t c = 0; c < cases.size(); ++c) draw_case(fig, cases[c], results[c]);
+    fig << "unset multiplot\n";
+    fig.finish();
+}
+
+void report(kit::Scene& scene, const std::vector<CaseResult>& results) {
+    double err = 0, run_time = 0;
+    std::vector<std::vector<double>> summary;
+    for (const CaseResult& r : results) {
+        err = std::max(err, r.row[3]);
+        run_time += r.run_time;
+        summary.push_back(r.row);
+    }
+    scene.report.headline("max |omega (closed form) - omega from finite differences of R(t)| / |omega|, three cases",
+                          err, run_time / 3);
+    scene.report.table("cases",
+                       {"angle_ab_deg", "alpha", "beta", "omega_error", "b_dot_omega_dev", "omega2_dev", "cones_touch"},
+                       summary);
+    scene.report.note(
+        "figure: grey = space cone (rays to omega(t)), blue = its rim; light blue = body cone at t* = 0.3 "
+        "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The three precessions: the angle between a and b (degrees), alpha and beta of each.
-    struct Case {
-        double angle, alpha, beta;
-    };
-    Case given[3] = {{90, 1.0, 1.0}, {35, 2.0, 0.7}, {125, 0.6, 1.5}};
-    kit::Options opts("precession_cones", "Chapter 2: space and body cones, and a body point's path, for three precessions");
-    opts.real("angle1", &given[0].angle, "case 1: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha1", &given[0].alpha, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta1", &given[0].beta, "case 1: precession frequency beta", kit::between(1e-6, 1e6))
-        .real("angle2", &given[1].angle, "case 2: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha2", &given[1].alpha, "case 2: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta2", &given[1].beta, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
-        .real("angle3", &given[2].angle, "case 3: angle between a and b (degrees)", kit::between(1, 179))
-        .real("alpha3", &given[2].alpha, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta3", &given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
-
-    return kit::run(argc, argv, opts, [&given](const kit::Options&, kit::Scene& scene) {
-        const Vec3 b = Vec3::UnitZ();
-        std::vector<RegularPrecession> cases;
-        for (int c = 1; c <= 3; ++c) {
-            const double th = given[c - 1].angle * std::numbers::pi / 180;
-            cases.push_back({Vec3(std::sin(th), 0, std::cos(th)), given[c - 1].alpha, b, given[c - 1].beta});
-            // omega is checked by differences of R over h = 0.02 / (alpha + beta) at times up to
-            // 2 pi / beta: for alpha >> beta the sum t + j h keeps only the leading digits of h.
-            const double ratio = cases.back().alpha / cases.back().beta;
-            if (!(ratio <= 1e3 && ratio >= 1e-3))
-                throw kit::BadInput("--alpha" + std::to_string(c) + ", --beta" + std::to_string(c) + ": alpha / beta = " +
-                                    std::to_string(ratio) + "; it must be between 1e-3 and 1e3 (the finite differences of R "
-                                    "lose their digits beyond)");
-        }
-        double err = 0, run_time = 0;
-        std::vector<std::vector<double>> summary;
-        kit::Figure fig(scene, "precession_cones.svg", 1200, 460);
-        if (fig.enabled())
-            fig << "set multiplot layout 1, 3 title 'Space cone (about b, fixed), body cone (about R(t*)a, carried by the body) "
-                   "and the path of a body point'\n"
-                   "set view 68, 30, 1.0, 1.25\nset view equal xyz\nset xyplane 0\nunset grid\nunset key\n"
-                   "set xtics 1\nset ytics 1\nset ztics 1\nset border 4095\n";
-        for (std::size_t c = 0; c < cases.size(); ++c) {
-            const RegularPrecession& p = cases[c];
-            const double Tb = 2 * std::numbers::pi / p.beta, Ta = 2 * std::numbers::pi / p.alpha;
-            const double h = 0.02 / (p.alpha + p.beta);
-            const int n = 240;
-            std::vector<Vec3> omega(n + 1);
-            run_time += kit::min_time([&] {
-                for (int k = 0; k <= n; ++k) omega[k] = rigid::precession_lab_angular_velocity(p, Tb * k / n);
-                kit::keep(omega);
-            }) / (n + 1);
-            const double axial = p.beta + p.alpha * p.a.dot(p.b), w2 = rigid::precession_omega_squared(p);
-            double e = 0, dev_axial = 0, dev_norm = 0;
-            for (int k = 0; k <= n; k += 4) {
-                const Vec3 ref = omega_fd(p, Tb * k / n, h);
-                e = std::max(e, (omega[k] - ref).norm() / ref.norm());
-                dev_axial = std::max(dev_axial, std::abs(p.b.dot(ref) - axial));
-                dev_norm = std::max(dev_norm, std::abs(ref.squaredNorm() - w2));
-            }
-            err = std::max(err, e);
-            const double t_star = 0.3 * Tb;
-            const Mat3 Rs = rigid::precession_rotation(p, t_star);
-            // Where the two cones touch: omega(t*) and R(t*) Omega(t*) must be the same vector.
-            const double touch =
-                (Rs * rigid::precession_body_angular_velocity(p, t_star) - rigid::precession_lab_angular_velocity(p, t_star)).norm();
-            const double ab = p.a.dot(p.b);
-            summary.push_back({std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta, e, dev_axial, dev_norm, touch});
-            if (!fig.enabled()) continue;
-
-            // Space cone: rays to omega(t) over one precession period, and its rim.
-            std::vector<std::vector<double>> space_rays, space_rim, body_rays, body_rim, path, contact;
-            for (int k = 0; k <= n; ++k) {
-                space_rim.push_back(row(omega[k]));
-                if (k % 12 == 0) {
-                    space_rays.push_back({0, 0, 0});
-                    space_rays.push_back(row(omega[k]));
-                    space_rays.push_back({});
-                    space_rays.push_back({});
-                }
-            }
-            // Body cone at t*: Omega(s) for one rotation period, carried by R(t*).
-            for (int k = 0; k <= n; ++k) {
-                const Vec3 x = Rs * rigid::precession_body_angular_velocity(p, Ta * k / n);
-                body_rim.push_back(row(x));
-                if (k % 12 == 0) {
-                    body_rays.push_back({0, 0, 0});
-                    body_rays.push_back(row(x));
-                    body_rays.push_back({});
-                    body_rays.push_back({});
-                }
-            }
-            // A body point on the unit sphere, off both axes, over several precession periods.
-            const Vec3 x0 = (p.a.unitOrthogonal() + 0.6 * p.a).normalized() * std::sqrt(w2);
-            for (int k = 0; k <= 600; ++k) path.push_back(row(rigid::precession_rotation(p, Tb * k / 600) * x0));
-            const Vec3 ws = rigid::precession_lab_angular_velocity(p, t_star);
-            contact = {{0, 0, 0}, row(ws)};
-            char title[160];
-            std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  α = %.2g;  β = %.2g",
-                          std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta);
-            fig << "set title " + kit::quoted(title) + "\n";
-            fig << "splot '-' with lines ls 8 lw 0.8, '-' with lines ls 1 lw 2, '-' with lines ls 6 lw 0.8, "
-                       "'-' with lines ls 2 lw 2, '-' with lines ls 3 lw 1, '-' with lines ls 7 lw 3\n";
-            fig.data(space_rays).data(space_rim).data(body_rays).data(body_rim).data(path).data(contact);
-        }
-        if (fig.enabled()) {
-            fig << "unset multiplot\n";
-            fig.finish();
-        }
-        scene.report.headline("max |omega (closed form) - omega from finite differences of R(t)| / |omega|, three cases",
-                              err, run_time / 3);
-        scene.report.table("cases", {"angle_ab_deg", "alpha", "beta", "omega_error", "b_dot_omega_dev", "omega2_dev", "cones_touch"},
-                           summary);
-        scene.report.note("figure: grey = space cone (rays to omega(t)), blue = its rim; light blue = body cone at t* = 0.3 "
-                          "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
+    Params prm;
+    kit::Options opts("precession_cones",
+                      "Chapter 2: space and body cones, and a body point's path, for three precessions");
+    declare(opts, prm);
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const std::vector<RegularPrecession> cases = precessions(prm);
+        std::vector<CaseResult> results;
+        for (const RegularPrecession& p : cases) results.push_back(compute(p));
+        draw(scene, cases, results);
+        report(scene, results);
     });
 }

@@ -20,123 +20,175 @@
 
 using rigid::Vec3;
 
-int main(int argc, char** argv) {
-    kit::Options opts("polhodes", "Chapter 3: polhodes on the energy ellipsoid, integrated and exact");
-    opts.vector("I", Vec3(2, 3, 4), "principal moments I1,I2,I3 (triangle inequality)", kit::components_between(1e-3, 1e3))
-        .real("energy", 0.5, "kinetic energy E of every curve", kit::between(1e-6, 1e6))
-        .integer("curves", 4, "polhodes on each side of the separatrix", 1, 20)
-        .choice("method", "rk8pd", {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams"},
+namespace {
+
+struct Params {
+    Vec3 I = Vec3(2, 3, 4);
+    double energy = 0.5;
+    int curves = 4;
+    std::string method = "rk8pd";
+    double tol = 1e-12;
+    int samples = 200;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.vector("I", &p.I, "principal moments I1,I2,I3 (triangle inequality)", kit::components_between(1e-3, 1e3))
+        .real("energy", &p.energy, "kinetic energy E of every curve", kit::between(1e-6, 1e6))
+        .integer("curves", &p.curves, "polhodes on each side of the separatrix", 1, 20)
+        .choice("method", &p.method, {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams"},
                 "GSL method for the integrations (rk4 here is GSL's; the student's RK4 is in the other scenes)")
-        .real("tol", 1e-12, "GSL tolerance (relative and absolute)", kit::between(1e-14, 1e-3))
-        .integer("samples", 200, "output times per period", 10, 100000);
+        .real("tol", &p.tol, "GSL tolerance (relative and absolute)", kit::between(1e-14, 1e-3))
+        .integer("samples", &p.samples, "output times per period", 10, 100000);
+}
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const Vec3 I = o.vector("I");
-        kit::require_moments(I, "I", {kit::Order::distinct});  // polhodes about two axes
-        const auto [lo, mid, hi] = scene3::sorted_axes(I);
-        const double E = o.real("energy"), tol = o.real("tol");
-        const int curves = static_cast<int>(o.integer("curves")), samples = static_cast<int>(o.integer("samples"));
-        const std::string method = o.choice("method");
-        // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
-        // separatrix), 3 timed runs, at the method's steps per radian for this tolerance.
-        kit::require_budget(o, {2.0 * curves * 3 * 12 * scene3::steps_per_radian(method, tol) + 6.0 * curves * samples,
-                                1.5e-6, "steps", "--curves, --tol, --method, --samples"});
+void check(const kit::Options& o, const Params& p) {
+    kit::require_moments(p.I, "I", {kit::Order::distinct});  // polhodes about two axes
+    // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
+    // separatrix), 3 timed runs, at the method's steps per radian for this tolerance.
+    kit::require_budget(
+        o, {2.0 * p.curves * 3 * 12 * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples, 1.5e-6,
+            "steps", "--curves, --tol, --method, --samples"});
+}
 
-        // D = M^2 / 2E on both sides of I_mid, evenly in the fraction of the way to the axis.
-        std::vector<double> Ds;
-        for (int k = 1; k <= curves; ++k) {
-            const double f = double(k) / (curves + 1);
-            Ds.push_back(I(mid) - f * (I(mid) - I(lo)));
-            Ds.push_back(I(mid) + f * (I(hi) - I(mid)));
-        }
-        double err = 0, drift_E = 0, drift_M = 0, orth = 0, run_time = 0;
-        long work = 0;
-        std::vector<std::vector<double>> summary;
-        std::vector<std::vector<std::vector<double>>> curves_lo, curves_hi;
-        for (double D : Ds) {
-            const Vec3 w0 = scene3::polhode_start(I, E, D);
-            const auto exact = rigid::free_body_motion(I, w0);
-            const auto times = rigid::linspace(0, exact.period, samples);
-            scene3::Run run;
-            run_time += kit::min_time([&] { run = scene3::integrate(I, w0, times, method, tol); }, 3);
-            work += run.work;
-            const double E0 = rigid::rotational_energy(I, w0), M0 = rigid::angular_momentum_squared(I, w0);
-            double e = 0;
-            std::vector<std::vector<double>> pts;
-            for (std::size_t k = 0; k < times.size(); ++k) {
-                const Vec3& w = run.Omega[k];
-                e = std::max(e, (w - rigid::free_body_exact_omega(exact, times[k])).norm() / w0.norm());
-                drift_E = std::max(drift_E, std::abs(rigid::rotational_energy(I, w) - E0) / E0);
-                drift_M = std::max(drift_M, std::abs(rigid::angular_momentum_squared(I, w) - M0) / M0);
-                orth = std::max(orth, (run.R[k].transpose() * run.R[k] - rigid::Mat3::Identity()).norm());
-                pts.push_back({w.x(), w.y(), w.z()});
-            }
-            err = std::max(err, e);
-            // -Omega(t) is a motion too: the mirror polhode about the other end of the same axis.
-            std::vector<std::vector<double>> mirror;
-            for (const auto& x : pts) mirror.push_back({-x[0], -x[1], -x[2]});
-            (D < I(mid) ? curves_lo : curves_hi).push_back(pts);
-            (D < I(mid) ? curves_lo : curves_hi).push_back(mirror);
-            summary.push_back({D, exact.m, exact.m_c, exact.period, e, double(run.work)});
-        }
-        scene.report.headline("max |Omega_integrated - Omega_exact| / |Omega(0)| over every polhode, one period each", err,
-                              run_time);
-        scene.report.add("method", method);
-        scene.report.add("tol", tol);
-        scene.report.add("rhs_calls", work);
-        scene.report.add("energy_drift", drift_E, "max |E(t) - E(0)| / E(0), [P, (6.9)]");
-        scene.report.add("momentum_drift", drift_M, "max |M^2(t) - M^2(0)| / M^2(0), [P, (6.9)]");
-        scene.report.add("orthogonality_defect", orth, "max ||R^T R - 1||_F");
-        scene.report.table("polhodes", {"D", "m", "m_c", "period", "omega_error", "rhs_calls"}, summary);
+using Curves = std::vector<std::vector<std::vector<double>>>;
 
-        kit::Figure fig(scene, "polhodes.svg", 760, 640);
-        if (!fig.enabled()) return;
-        const Vec3 semi(std::sqrt(2 * E / I(0)), std::sqrt(2 * E / I(1)), std::sqrt(2 * E / I(2)));
-        // The energy ellipsoid as a light mesh of meridians and parallels.
-        std::vector<std::vector<double>> mesh;
-        for (int i = 0; i < 12; ++i) {
-            const double ph = std::numbers::pi * i / 12;
-            for (int k = 0; k <= 60; ++k) {
-                const double th = 2 * std::numbers::pi * k / 60;
-                mesh.push_back({semi.x() * std::sin(th) * std::cos(ph), semi.y() * std::sin(th) * std::sin(ph), semi.z() * std::cos(th)});
-            }
-            mesh.push_back({});
-            mesh.push_back({});
+// Every polhode integrated and compared with the exact motion.
+struct Polhodes {
+    double err = 0, drift_E = 0, drift_M = 0, orth = 0, run_time = 0;
+    long work = 0;
+    std::vector<std::vector<double>> summary;  // D, m, m_c, period, omega error, rhs calls
+    Curves lo, hi;                             // the curves about the smallest and the largest axis
+};
+
+// One polhode, M^2 = 2 E D: integrated over one period, against the exact elliptic motion.
+void integrate_polhode(const Params& p, double D, Polhodes& out) {
+    const Vec3& I = p.I;
+    const auto [lo, mid, hi] = scene3::sorted_axes(I);
+    const Vec3 w0 = scene3::polhode_start(I, p.energy, D);
+    const auto exact = rigid::free_body_motion(I, w0);
+    const auto times = rigid::linspace(0, exact.period, p.samples);
+    scene3::Run run;
+    out.run_time += kit::min_time([&] { run = scene3::integrate(I, w0, times, p.method, p.tol); }, 3);
+    out.work += run.work;
+    const double E0 = rigid::rotational_energy(I, w0), M0 = rigid::angular_momentum_squared(I, w0);
+    double e = 0;
+    std::vector<std::vector<double>> pts;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const Vec3& w = run.Omega[k];
+        e = std::max(e, (w - rigid::free_body_exact_omega(exact, times[k])).norm() / w0.norm());
+        out.drift_E = std::max(out.drift_E, std::abs(rigid::rotational_energy(I, w) - E0) / E0);
+        out.drift_M = std::max(out.drift_M, std::abs(rigid::angular_momentum_squared(I, w) - M0) / M0);
+        out.orth = std::max(out.orth, (run.R[k].transpose() * run.R[k] - rigid::Mat3::Identity()).norm());
+        pts.push_back({w.x(), w.y(), w.z()});
+    }
+    out.err = std::max(out.err, e);
+    // -Omega(t) is a motion too: the mirror polhode about the other end of the same axis.
+    std::vector<std::vector<double>> mirror;
+    for (const auto& x : pts) mirror.push_back({-x[0], -x[1], -x[2]});
+    (D < I(mid) ? out.lo : out.hi).push_back(pts);
+    (D < I(mid) ? out.lo : out.hi).push_back(mirror);
+    out.summary.push_back({D, exact.m, exact.m_c, exact.period, e, double(run.work)});
+}
+
+Polhodes compute(const Params& p) {
+    const auto [lo, mid, hi] = scene3::sorted_axes(p.I);
+    Polhodes out;
+    // D = M^2 / 2E on both sides of I_mid, evenly in the fraction of the way to the axis.
+    for (int k = 1; k <= p.curves; ++k) {
+        const double f = double(k) / (p.curves + 1);
+        integrate_polhode(p, p.I(mid) - f * (p.I(mid) - p.I(lo)), out);
+        integrate_polhode(p, p.I(mid) + f * (p.I(hi) - p.I(mid)), out);
+    }
+    return out;
+}
+
+void report(kit::Scene& scene, const Params& p, const Polhodes& r) {
+    scene.report.headline("max |Omega_integrated - Omega_exact| / |Omega(0)| over every polhode, one period each",
+                          r.err, r.run_time);
+    scene.report.add("method", p.method);
+    scene.report.add("tol", p.tol);
+    scene.report.add("rhs_calls", r.work);
+    scene.report.add("energy_drift", r.drift_E, "max |E(t) - E(0)| / E(0), [P, (6.9)]");
+    scene.report.add("momentum_drift", r.drift_M, "max |M^2(t) - M^2(0)| / M^2(0), [P, (6.9)]");
+    scene.report.add("orthogonality_defect", r.orth, "max ||R^T R - 1||_F");
+    scene.report.table("polhodes", {"D", "m", "m_c", "period", "omega_error", "rhs_calls"}, r.summary);
+}
+
+// The energy ellipsoid as a light mesh of meridians and parallels.
+std::vector<std::vector<double>> ellipsoid(const Vec3& semi) {
+    std::vector<std::vector<double>> mesh;
+    for (int i = 0; i < 12; ++i) {
+        const double ph = std::numbers::pi * i / 12;
+        for (int k = 0; k <= 60; ++k) {
+            const double th = 2 * std::numbers::pi * k / 60;
+            mesh.push_back({semi.x() * std::sin(th) * std::cos(ph), semi.y() * std::sin(th) * std::sin(ph),
+                            semi.z() * std::cos(th)});
         }
-        // The separatrix: the energy ellipsoid cut by I_lo (I_mid - I_lo) W_lo^2 = I_hi (I_hi - I_mid) W_hi^2.
-        std::vector<std::vector<double>> sep;
-        const double c_lo = std::sqrt(I(hi) * (I(hi) - I(mid))), c_hi = std::sqrt(I(lo) * (I(mid) - I(lo)));
-        for (double sign : {1.0, -1.0}) {
-            Vec3 u = Vec3::Zero();
-            u(lo) = c_lo;
-            u(hi) = sign * c_hi;
-            u *= std::sqrt(2 * E / (I(lo) * u(lo) * u(lo) + I(hi) * u(hi) * u(hi)));
-            for (int k = 0; k <= 200; ++k) {
-                const double th = 2 * std::numbers::pi * k / 200;
-                Vec3 x = std::cos(th) * u;
-                x(mid) = semi(mid) * std::sin(th);
-                sep.push_back({x.x(), x.y(), x.z()});
-            }
-            sep.push_back({});
-            sep.push_back({});
+        mesh.push_back({});
+        mesh.push_back({});
+    }
+    return mesh;
+}
+
+// The separatrix: the energy ellipsoid cut by I_lo (I_mid - I_lo) W_lo^2 = I_hi (I_hi - I_mid) W_hi^2.
+std::vector<std::vector<double>> separatrix(const Vec3& I, double E, const Vec3& semi) {
+    const auto [lo, mid, hi] = scene3::sorted_axes(I);
+    std::vector<std::vector<double>> sep;
+    const double c_lo = std::sqrt(I(hi) * (I(hi) - I(mid))), c_hi = std::sqrt(I(lo) * (I(mid) - I(lo)));
+    for (double sign : {1.0, -1.0}) {
+        Vec3 u = Vec3::Zero();
+        u(lo) = c_lo;
+        u(hi) = sign * c_hi;
+        u *= std::sqrt(2 * E / (I(lo) * u(lo) * u(lo) + I(hi) * u(hi) * u(hi)));
+        for (int k = 0; k <= 200; ++k) {
+            const double th = 2 * std::numbers::pi * k / 200;
+            Vec3 x = std::cos(th) * u;
+            x(mid) = semi(mid) * std::sin(th);
+            sep.push_back({x.x(), x.y(), x.z()});
         }
-        auto join = [](const std::vector<std::vector<std::vector<double>>>& cs) {
-            std::vector<std::vector<double>> out;
-            for (const auto& c : cs) {
-                out.insert(out.end(), c.begin(), c.end());
-                out.push_back({});
-                out.push_back({});
-            }
-            return out;
-        };
-        fig << "set view 58, 32, 1.0, 1.35\nset view equal xyz\nset xyplane 0\nunset grid\nset border 4095\n"
-               "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
-               "set key at screen 0.01, 0.99 top left\n"
-               "splot '-' with lines ls 8 lw 0.5 title 'energy ellipsoid', "
-               "'-' with lines ls 1 lw 2 title 'polhodes about the smallest axis', "
-               "'-' with lines ls 2 lw 2 title 'polhodes about the largest axis', "
-               "'-' with lines ls 7 lw 2.5 title 'separatrix (two plane ellipses)'\n";
-        fig.data(mesh).data(join(curves_lo)).data(join(curves_hi)).data(sep);
-        fig.finish();
+        sep.push_back({});
+        sep.push_back({});
+    }
+    return sep;
+}
+
+std::vector<std::vector<double>> join(const Curves& cs) {
+    std::vector<std::vector<double>> out;
+    for (const auto& c : cs) {
+        out.insert(out.end(), c.begin(), c.end());
+        out.push_back({});
+        out.push_back({});
+    }
+    return out;
+}
+
+void draw(kit::Scene& scene, const Params& p, const Polhodes& r) {
+    kit::Figure fig(scene, "polhodes.svg", 760, 640);
+    if (!fig.enabled()) return;
+    const Vec3& I = p.I;
+    const double E = p.energy;
+    const Vec3 semi(std::sqrt(2 * E / I(0)), std::sqrt(2 * E / I(1)), std::sqrt(2 * E / I(2)));
+    fig << "set view 58, 32, 1.0, 1.35\nset view equal xyz\nset xyplane 0\nunset grid\nset border 4095\n"
+           "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
+           "set key at screen 0.01, 0.99 top left\n"
+           "splot '-' with lines ls 8 lw 0.5 title 'energy ellipsoid', "
+           "'-' with lines ls 1 lw 2 title 'polhodes about the smallest axis', "
+           "'-' with lines ls 2 lw 2 title 'polhodes about the largest axis', "
+           "'-' with lines ls 7 lw 2.5 title 'separatrix (two plane ellipses)'\n";
+    fig.data(ellipsoid(semi)).data(join(r.lo)).data(join(r.hi)).data(separatrix(I, E, semi));
+    fig.finish();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("polhodes", "Chapter 3: polhodes on the energy ellipsoid, integrated and exact");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        check(o, p);
+        const Polhodes r = compute(p);
+        report(scene, p, r);
+        draw(scene, p, r);
     });
 }

@@ -22,8 +22,9 @@ using rigid::Vec3;
 
 namespace {
 
-const char* names[11] = {"constant", "cos(alpha t)",  "sin(alpha t)",  "cos(2 alpha t)", "sin(2 alpha t)", "cos(beta t)",
-                         "sin(beta t)", "cos(gamma+ t)", "sin(gamma+ t)", "cos(gamma- t)", "sin(gamma- t)"};
+const char* names[11] = {"constant",       "cos(alpha t)",  "sin(alpha t)", "cos(2 alpha t)",
+                         "sin(2 alpha t)", "cos(beta t)",   "sin(beta t)",  "cos(gamma+ t)",
+                         "sin(gamma+ t)",  "cos(gamma- t)", "sin(gamma- t)"};
 
 std::vector<Vec3> rows_of(const PrecessionSeries& s) {
     return {s.constant, s.cos_alpha, s.sin_alpha, s.cos_2alpha, s.sin_2alpha, s.cos_beta,
@@ -36,8 +37,10 @@ PrecessionSeries printed_E(const Mat3& J, double alpha, double beta, double b3) 
     const double b2 = std::sqrt(1 - b3 * b3), w = alpha + beta * b3, bb = beta * b2, half = bb * bb / 2;
     PrecessionSeries E;
     E.constant = (half - w * w) * Vec3(J(1, 2), -J(0, 2), 0);
-    E.cos_alpha = bb * Vec3(w * (J(2, 2) - J(1, 1)) + alpha * J(0, 0), (2 * alpha + beta * b3) * J(0, 1), -beta * b3 * J(0, 2));
-    E.sin_alpha = bb * Vec3(-(2 * alpha + beta * b3) * J(0, 1), w * (J(0, 0) - J(2, 2)) - alpha * J(1, 1), beta * b3 * J(1, 2));
+    E.cos_alpha =
+        bb * Vec3(w * (J(2, 2) - J(1, 1)) + alpha * J(0, 0), (2 * alpha + beta * b3) * J(0, 1), -beta * b3 * J(0, 2));
+    E.sin_alpha =
+        bb * Vec3(-(2 * alpha + beta * b3) * J(0, 1), w * (J(0, 0) - J(2, 2)) - alpha * J(1, 1), beta * b3 * J(1, 2));
     E.cos_2alpha = half * Vec3(J(1, 2), J(0, 2), -2 * J(0, 1));
     E.sin_2alpha = half * Vec3(J(0, 2), -J(1, 2), 2 * (J(1, 1) - J(0, 0)));
     return E;
@@ -77,83 +80,136 @@ std::vector<Vec3> fourier_fit(F v, double alpha, double beta, int N) {
 }
 // end snippet
 
+struct Params {
+    double b3 = 0.37;
+    double k_angle = 0.8;
+    Vec3 z0 = Vec3(0.3, -0.5, 0.8);
+    int samples = 64;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    opts.real("b3", &p.b3, "third component of the precession vector b = (0, b2, b3), [P, (3.3)]",
+              kit::between(-0.99, 0.99))
+        .real("k-angle", &p.k_angle, "direction of k = (0, cos, sin) in the plane of a and b (radians)",
+              kit::between(-10, 10))
+        .vector("z0", &p.z0, "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector(-1e3, 1e3))
+        .integer("samples", &p.samples,
+                 "samples N over the period 2 pi (at least 2 * 8 + 1 = 17 resolve every frequency)", 32, 4096);
+}
+
+// The trial motion, and the 11 coefficient vectors of E and of T: numerical, from the series
+// corrected, and as printed.
+struct Series {
+    double alpha = 3, beta = 5;  // commensurate: one common period 2 pi
+    Vec3 b, k, z0;
+    std::vector<Vec3> numE, numT, corE, corT, prE, prT;
+    double run_time;
+};
+
+Series compute(const Params& prm) {
+    Series s;
+    const double b3 = prm.b3, b2 = std::sqrt(1 - b3 * b3), phi = prm.k_angle;
+    const double alpha = s.alpha, beta = s.beta;
+    Mat3 J;  // a general symmetric J: the lab axes are not inertia axes
+    J << 2.1, 0.3, -0.2, 0.3, 1.7, 0.45, -0.2, 0.45, 2.6;
+    const Vec3 a = Vec3::UnitZ();
+    s.b = Vec3(0, b2, b3), s.k = Vec3(0, std::cos(phi), std::sin(phi)), s.z0 = prm.z0.normalized();
+    const rigid::TrialPrecession p{a, alpha, s.b, beta};
+    PrecessionSeries serE, serT;
+    s.run_time = kit::min_time(
+        [&] {
+            s.numE = fourier_fit([&](double t) { return rigid::euler_vector(J, p, t); }, alpha, beta, prm.samples);
+            s.numT = fourier_fit([&](double t) { return rigid::torque(s.k, s.z0, p, t); }, alpha, beta, prm.samples);
+            serE = rigid::euler_vector_series(J, alpha, beta, b3);
+            serT = rigid::torque_series(s.k, s.z0, alpha, beta, b3);
+        },
+        3);
+    s.corE = rows_of(serE), s.corT = rows_of(serT);
+    s.prE = rows_of(printed_E(J, alpha, beta, b3)), s.prT = rows_of(printed_T(s.k, s.z0, b3));
+    return s;
+}
+
+std::string xyz(const Vec3& v) {
+    std::string s(1, '(');
+    s += std::to_string(v.x());
+    s += ", ";
+    s += std::to_string(v.y());
+    s += ", ";
+    s += std::to_string(v.z());
+    return s += ')';
+}
+
+// Coefficient by coefficient, printed and corrected against numerical: the table (term,
+// E_printed, E_corrected, T_printed, T_corrected) and a note for every printed one that is off.
+std::vector<std::vector<double>> compare(kit::Report& report, const Series& s) {
+    double scaleE = 0, scaleT = 0;
+    for (int i = 0; i < 11; ++i)
+        scaleE = std::max(scaleE, s.numE[i].norm()), scaleT = std::max(scaleT, s.numT[i].norm());
+    std::vector<std::vector<double>> table;
+    for (int i = 0; i < 11; ++i) {
+        const double pe = (s.prE[i] - s.numE[i]).norm() / scaleE, ce = (s.corE[i] - s.numE[i]).norm() / scaleE;
+        const double pt = (s.prT[i] - s.numT[i]).norm() / scaleT, ct = (s.corT[i] - s.numT[i]).norm() / scaleT;
+        table.push_back({double(i), pe, ce, pt, ct});
+        if (pe > 1e-10)
+            report.note("(3.5) " + std::string(names[i]) + ": printed " + xyz(s.prE[i]) + ", numerical " +
+                        xyz(s.numE[i]));
+        if (pt > 1e-10)
+            report.note("(3.6) " + std::string(names[i]) + ": printed " + xyz(s.prT[i]) + ", numerical " +
+                        xyz(s.numT[i]));
+    }
+    return table;
+}
+
+void report(kit::Scene& scene, const Params& p, const Series& s, const std::vector<std::vector<double>>& table) {
+    double worst_corrected = 0;
+    for (const auto& row : table) worst_corrected = std::max({worst_corrected, row[2], row[4]});
+    scene.report.headline("max over the 22 coefficient vectors of |corrected - numerical| / largest coefficient",
+                          worst_corrected, s.run_time);
+    scene.report.add("alpha", s.alpha);
+    scene.report.add("beta", s.beta);
+    scene.report.add("b", s.b);
+    scene.report.add("k", s.k);
+    scene.report.add("z0", s.z0);
+    scene.report.add("samples", static_cast<long>(p.samples));
+    scene.report.table("coefficients", {"term", "E_printed", "E_corrected", "T_printed", "T_corrected"}, table);
+    scene.report.note(
+        "terms: 0 constant, 1-2 cos/sin(alpha t), 3-4 cos/sin(2 alpha t), 5-6 cos/sin(beta t), "
+        "7-8 cos/sin(gamma+ t), 9-10 cos/sin(gamma- t); errors relative to the largest coefficient");
+}
+
+void draw(kit::Scene& scene, const std::vector<std::vector<double>>& table) {
+    std::vector<std::vector<double>> figE, figT;
+    for (const auto& r : table) {
+        figE.push_back({r[0], std::max(r[1], 1e-17), std::max(r[2], 1e-17)});
+        figT.push_back({r[0], std::max(r[3], 1e-17), std::max(r[4], 1e-17)});
+    }
+    kit::Figure fig(scene, "series_check.svg", 860, 520);
+    fig << "set title 'The series (3.5) for E and (3.6) for T, coefficient by coefficient'\n"
+           "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:10]\n"
+           "set ylabel '|coefficient - numerical| / largest coefficient'\n"
+           "set xtics ('const' 0, 'cos αt' 1, 'sin αt' 2, 'cos 2αt' 3, "
+           "'sin 2αt' 4, 'cos βt' 5, 'sin βt' 6, 'cos γ_+t' 7, "
+           "'sin γ_+t' 8, 'cos γ_-t' 9, 'sin γ_-t' 10) rotate by -35\n"
+           "set xrange [-0.6:10.6]\nset key top left\n"
+           "plot '-' using ($1-0.2):2 with impulses lw 6 lc rgb '#D55E00' title 'E, as printed in [P]', "
+           "'-' using ($1-0.2):3 with points ls 1 pt 7 ps 1.0 title 'E, corrected', "
+           "'-' using ($1+0.2):2 with impulses lw 6 lc rgb '#E69F00' title 'T, as printed in [P]', "
+           "'-' using ($1+0.2):3 with points ls 3 pt 9 ps 1.2 title 'T, corrected'\n";
+    fig.data(figE).data(figE).data(figT).data(figT);
+    fig.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    kit::Options opts("heavy_top_series", "Chapter 4: the series (3.5)-(3.6) for E and T against a numerical Fourier decomposition");
-    opts.real("b3", 0.37, "third component of the precession vector b = (0, b2, b3), [P, (3.3)]", kit::between(-0.99, 0.99))
-        .real("k-angle", 0.8, "direction of k = (0, cos, sin) in the plane of a and b (radians)", kit::between(-10, 10))
-        .vector("z0", Vec3(0.3, -0.5, 0.8), "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector(-1e3, 1e3))
-        .integer("samples", 64, "samples N over the period 2 pi (at least 2 * 8 + 1 = 17 resolve every frequency)", 32, 4096);
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const double b3 = o.real("b3"), b2 = std::sqrt(1 - b3 * b3), phi = o.real("k-angle");
-        const int N = static_cast<int>(o.integer("samples"));
-        const double alpha = 3, beta = 5;  // commensurate: one common period 2 pi
-        Mat3 J;                            // a general symmetric J: the lab axes are not inertia axes
-        J << 2.1, 0.3, -0.2, 0.3, 1.7, 0.45, -0.2, 0.45, 2.6;
-        const Vec3 a = Vec3::UnitZ(), b(0, b2, b3), k(0, std::cos(phi), std::sin(phi));
-        const Vec3 z0 = o.vector("z0").normalized();
-        const rigid::TrialPrecession p{a, alpha, b, beta};
-
-        std::vector<Vec3> numE, numT;
-        PrecessionSeries serE, serT;
-        const double run_time = kit::min_time([&] {
-            numE = fourier_fit([&](double t) { return rigid::euler_vector(J, p, t); }, alpha, beta, N);
-            numT = fourier_fit([&](double t) { return rigid::torque(k, z0, p, t); }, alpha, beta, N);
-            serE = rigid::euler_vector_series(J, alpha, beta, b3);
-            serT = rigid::torque_series(k, z0, alpha, beta, b3);
-        }, 3);
-        const auto corE = rows_of(serE), corT = rows_of(serT);
-        const auto prE = rows_of(printed_E(J, alpha, beta, b3)), prT = rows_of(printed_T(k, z0, b3));
-
-        double scaleE = 0, scaleT = 0;
-        for (int i = 0; i < 11; ++i) scaleE = std::max(scaleE, numE[i].norm()), scaleT = std::max(scaleT, numT[i].norm());
-        double worst_corrected = 0;
-        std::vector<std::vector<double>> table, figE, figT;
-        for (int i = 0; i < 11; ++i) {
-            const double pe = (prE[i] - numE[i]).norm() / scaleE, ce = (corE[i] - numE[i]).norm() / scaleE;
-            const double pt = (prT[i] - numT[i]).norm() / scaleT, ct = (corT[i] - numT[i]).norm() / scaleT;
-            worst_corrected = std::max({worst_corrected, ce, ct});
-            table.push_back({double(i), pe, ce, pt, ct});
-            figE.push_back({double(i), std::max(pe, 1e-17), std::max(ce, 1e-17)});
-            figT.push_back({double(i), std::max(pt, 1e-17), std::max(ct, 1e-17)});
-            if (pe > 1e-10)
-                scene.report.note("(3.5) " + std::string(names[i]) + ": printed (" + std::to_string(prE[i].x()) + ", " +
-                                  std::to_string(prE[i].y()) + ", " + std::to_string(prE[i].z()) + "), numerical (" +
-                                  std::to_string(numE[i].x()) + ", " + std::to_string(numE[i].y()) + ", " +
-                                  std::to_string(numE[i].z()) + ")");
-            if (pt > 1e-10)
-                scene.report.note("(3.6) " + std::string(names[i]) + ": printed (" + std::to_string(prT[i].x()) + ", " +
-                                  std::to_string(prT[i].y()) + ", " + std::to_string(prT[i].z()) + "), numerical (" +
-                                  std::to_string(numT[i].x()) + ", " + std::to_string(numT[i].y()) + ", " +
-                                  std::to_string(numT[i].z()) + ")");
-        }
-        scene.report.headline("max over the 22 coefficient vectors of |corrected - numerical| / largest coefficient",
-                              worst_corrected, run_time);
-        scene.report.add("alpha", alpha);
-        scene.report.add("beta", beta);
-        scene.report.add("b", b);
-        scene.report.add("k", k);
-        scene.report.add("z0", z0);
-        scene.report.add("samples", static_cast<long>(N));
-        scene.report.table("coefficients", {"term", "E_printed", "E_corrected", "T_printed", "T_corrected"}, table);
-        scene.report.note("terms: 0 constant, 1-2 cos/sin(alpha t), 3-4 cos/sin(2 alpha t), 5-6 cos/sin(beta t), "
-                          "7-8 cos/sin(gamma+ t), 9-10 cos/sin(gamma- t); errors relative to the largest coefficient");
-
-        kit::Figure fig(scene, "series_check.svg", 860, 520);
-        fig << "set title 'The series (3.5) for E and (3.6) for T, coefficient by coefficient'\n"
-               "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:10]\n"
-               "set ylabel '|coefficient - numerical| / largest coefficient'\n"
-               "set xtics ('const' 0, 'cos αt' 1, 'sin αt' 2, 'cos 2αt' 3, "
-               "'sin 2αt' 4, 'cos βt' 5, 'sin βt' 6, 'cos γ_+t' 7, "
-               "'sin γ_+t' 8, 'cos γ_-t' 9, 'sin γ_-t' 10) rotate by -35\n"
-               "set xrange [-0.6:10.6]\nset key top left\n"
-               "plot '-' using ($1-0.2):2 with impulses lw 6 lc rgb '#D55E00' title 'E, as printed in [P]', "
-               "'-' using ($1-0.2):3 with points ls 1 pt 7 ps 1.0 title 'E, corrected', "
-               "'-' using ($1+0.2):2 with impulses lw 6 lc rgb '#E69F00' title 'T, as printed in [P]', "
-               "'-' using ($1+0.2):3 with points ls 3 pt 9 ps 1.2 title 'T, corrected'\n";
-        fig.data(figE).data(figE).data(figT).data(figT);
-        fig.finish();
+    Params p;
+    kit::Options opts("heavy_top_series",
+                      "Chapter 4: the series (3.5)-(3.6) for E and T against a numerical Fourier decomposition");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const Series s = compute(p);
+        const auto table = compare(scene.report, s);
+        report(scene, p, s, table);
+        draw(scene, table);
     });
 }

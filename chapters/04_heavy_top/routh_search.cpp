@@ -18,80 +18,119 @@
 using rigid::Vec3;
 using std::numbers::pi;
 
-int main(int argc, char** argv) {
-    kit::Options opts("routh_search", "Chapter 4: Routh's result, no regular precession of an asymmetric body about the vertical");
-    opts.real("A", 1.0, "smallest principal moment at O", kit::between(1e-6, 1e6))
-        .real("B", 1.5, "intermediate principal moment at O (the symmetric twin has A = B)", kit::between(1e-6, 1e6))
-        .real("C", 2.2, "largest principal moment at O", kit::between(1e-6, 1e6))
-        .integer("restarts", 6, "random starts per search for the asymmetric body (the symmetric twin gets four times as many; it stops at its first zero)", 1, 200)
-        .integer("seed", 1, "seed of the random starts", 0, 1000000);
+namespace {
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const Vec3 asym(o.real("A"), o.real("B"), o.real("C")), sym(o.real("B"), o.real("B"), o.real("C"));
-        kit::require_moments(asym(0), asym(1), asym(2), {"A", "B", "C"});
-        const int restarts = static_cast<int>(o.integer("restarts"));
-        const unsigned seed = static_cast<unsigned>(o.integer("seed"));
-        const std::vector<double> ratios = {0.5, 1.0, 2.0};
-        const std::vector<double> gammas_deg = {5, 30, 60, 90, 120, 150, 175};
+struct Params {
+    kit::MomentsAtO body;
+    int restarts = 6;
+    long seed = 1;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    kit::moment_options(opts, p.body)
+        .integer("restarts", &p.restarts,
+                 "random starts per search for the asymmetric body (the symmetric twin (B, B, C) gets four times as "
+                 "many; it stops at its first zero)",
+                 1, 200)
+        .integer("seed", &p.seed, "seed of the random starts", 0, 1000000);
+}
+
+const std::vector<double> ratios = {0.5, 1.0, 2.0};
+const std::vector<double> gammas_deg = {5, 30, 60, 90, 120, 150, 175};
+
+struct Grid {
+    std::vector<std::vector<double>> rows;  // gamma, then asym and sym residual per ratio
+    double asym_min = 1e300, sym_max = 0, sym_time = 0;
+    long evaluations = 0;
+};
+
+// snippet: ch04_routh_grid
+// The smallest residual of E = f T with k along b, for the asymmetric body and its symmetric
+// twin, at every angle gamma between a and b and every ratio beta / alpha.
+Grid search(const Vec3& asym, const Vec3& sym, int restarts, unsigned seed) {
+    Grid grid;
+    for (double gd : gammas_deg) {
+        std::vector<double> row{gd};
+        for (int which = 0; which < 2; ++which)
+            for (double ratio : ratios) {
+                const Vec3& body = which ? sym : asym;
+                rigid::PrecessionFit fit{};
+                const double t = kit::min_time(
+                    [&] {
+                        fit = rigid::min_precession_residual({.moments = body,
+                                                              .gamma = gd * pi / 180,
+                                                              .ratio = ratio,
+                                                              .k_along_b = true,
+                                                              .restarts = which ? 4 * restarts : restarts,
+                                                              .seed = seed});
+                    },
+                    1);
+                grid.evaluations += fit.evaluations;
+                row.push_back(fit.residual);
+                if (which == 0)
+                    grid.asym_min = std::min(grid.asym_min, fit.residual);
+                else
+                    grid.sym_max = std::max(grid.sym_max, fit.residual), grid.sym_time += t;
+            }
+        grid.rows.push_back(row);
+    }
+    return grid;
+}
+// end snippet
+
+void report(kit::Scene& scene, const Grid& grid) {
+    scene.report.headline("largest residual left for the symmetric twin (A = B), whose precessions about k exist",
+                          grid.sym_max, grid.sym_time);
+    scene.report.add("asymmetric_min", grid.asym_min, "smallest residual found for the asymmetric body, whole grid");
+    std::vector<double> near_vertical;
+    for (std::size_t r = 0; r < ratios.size(); ++r) near_vertical.push_back(grid.rows[0][1 + r]);
+    scene.report.add("asymmetric_at_5deg", near_vertical,
+                     "gamma = 5 deg, beta/alpha = 1/2, 1, 2: smallest near a || k");
+    scene.report.add("evaluations", grid.evaluations);
+    scene.report.table("min_residual", {"gamma_deg", "asym_r0.5", "asym_r1", "asym_r2", "sym_r0.5", "sym_r1", "sym_r2"},
+                       grid.rows);
+    scene.report.note(
+        "the asymmetric minimum shrinks as gamma -> 0 or pi: there the trial motion degenerates into a "
+        "uniform rotation about the vertical (Staude), which [P]'s definition (1.4) excludes");
+}
+
+void draw(kit::Scene& scene, const Grid& grid) {
+    kit::Figure fig(scene, "routh_min_residual.svg", 820, 500);
+    fig << "set title 'Precession about the vertical (b = k): smallest residual of E = f T found'\n"
+           "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [0:180]\nset xtics 30\n"
+           "set xlabel 'angle γ between the rotation vector a and the vertical (degrees)'\n"
+           "set ylabel 'min RMS |E - fT| / f'\nset key center right\n";
+    const char* rt[] = {"1/2", "1", "2"};
+    std::string plot = "plot ";
+    for (std::size_t r = 0; r < ratios.size(); ++r)
+        plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
+                " title 'asymmetric, β/α = " + rt[r] + "'";
+    for (std::size_t r = 0; r < ratios.size(); ++r)
+        plot += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
+                " dt 2 pt 6 title 'symmetric (A = B), β/α = " + rt[r] + "'";
+    fig << plot + "\n";
+    for (std::size_t c = 1; c <= 2 * ratios.size(); ++c) {
+        std::vector<std::vector<double>> d;
+        for (const auto& row : grid.rows) d.push_back({row[0], std::max(row[c], 1e-17)});
+        fig.data(d);
+    }
+    fig.finish();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("routh_search",
+                      "Chapter 4: Routh's result, no regular precession of an asymmetric body about the vertical");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const Vec3 asym = kit::require_moments(p.body), sym(p.body.B, p.body.B, p.body.C);
         // The work: 21 searches of `restarts` simplex runs on the asymmetric body and 21 of
         // 4 restarts on its symmetric twin (which stops at its first zero: about 3 runs, measured).
-        kit::require_budget(o, {21.0 * (restarts + 3), 0.03, "simplex runs", "--restarts"});
-
-        // snippet: ch04_routh_grid
-        std::vector<std::vector<double>> rows;  // gamma, then asym and sym residual per ratio
-        double asym_min = 1e300, sym_max = 0, sym_time = 0;
-        long evaluations = 0;
-        for (double gd : gammas_deg) {
-            std::vector<double> row{gd};
-            for (int which = 0; which < 2; ++which)
-                for (double ratio : ratios) {
-                    const Vec3& body = which ? sym : asym;
-                    rigid::PrecessionFit fit{};
-                    const double t = kit::min_time([&] {
-                        fit = rigid::min_precession_residual({.moments = body, .gamma = gd * pi / 180, .ratio = ratio,
-                                                              .k_along_b = true, .restarts = which ? 4 * restarts : restarts,
-                                                              .seed = seed});
-                    }, 1);
-                    evaluations += fit.evaluations;
-                    row.push_back(fit.residual);
-                    if (which == 0) asym_min = std::min(asym_min, fit.residual);
-                    else sym_max = std::max(sym_max, fit.residual), sym_time += t;
-                }
-            rows.push_back(row);
-        }
-        // end snippet
-
-        scene.report.headline("largest residual left for the symmetric twin (A = B), whose precessions about k exist",
-                              sym_max, sym_time);
-        scene.report.add("asymmetric_min", asym_min, "smallest residual found for the asymmetric body, whole grid");
-        std::vector<double> near_vertical;
-        for (std::size_t r = 0; r < ratios.size(); ++r) near_vertical.push_back(rows[0][1 + r]);
-        scene.report.add("asymmetric_at_5deg", near_vertical, "gamma = 5 deg, beta/alpha = 1/2, 1, 2: smallest near a || k");
-        scene.report.add("evaluations", evaluations);
-        scene.report.table("min_residual",
-                           {"gamma_deg", "asym_r0.5", "asym_r1", "asym_r2", "sym_r0.5", "sym_r1", "sym_r2"}, rows);
-        scene.report.note("the asymmetric minimum shrinks as gamma -> 0 or pi: there the trial motion degenerates into a "
-                          "uniform rotation about the vertical (Staude), which [P]'s definition (1.4) excludes");
-
-        kit::Figure fig(scene, "routh_min_residual.svg", 820, 500);
-        fig << "set title 'Precession about the vertical (b = k): smallest residual of E = f T found'\n"
-               "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [0:180]\nset xtics 30\n"
-               "set xlabel 'angle γ between the rotation vector a and the vertical (degrees)'\n"
-               "set ylabel 'min RMS |E - fT| / f'\nset key center right\n";
-        const char* rt[] = {"1/2", "1", "2"};
-        std::string plot = "plot ";
-        for (std::size_t r = 0; r < ratios.size(); ++r)
-            plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                    " title 'asymmetric, β/α = " + rt[r] + "'";
-        for (std::size_t r = 0; r < ratios.size(); ++r)
-            plot += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) + " dt 2 pt 6 title 'symmetric (A = B), β/α = " +
-                    rt[r] + "'";
-        fig << plot + "\n";
-        for (std::size_t c = 1; c <= 2 * ratios.size(); ++c) {
-            std::vector<std::vector<double>> d;
-            for (const auto& row : rows) d.push_back({row[0], std::max(row[c], 1e-17)});
-            fig.data(d);
-        }
-        fig.finish();
+        kit::require_budget(o, {21.0 * (p.restarts + 3), 0.03, "simplex runs", "--restarts"});
+        const Grid grid = search(asym, sym, p.restarts, static_cast<unsigned>(p.seed));
+        report(scene, grid);
+        draw(scene, grid);
     });
 }

@@ -13,31 +13,30 @@
 
 namespace ch5 {
 
-// --A --B --C --f, each in [1e-6, 1e6]; the rules between the moments (A < B < C,
-// A + B >= C) are checked by rigid::moments(). Returns opts, so more options can follow.
-inline kit::Options& moment_options(kit::Options& opts) {
-    return opts.real("A", 1.0, "smallest principal moment at O", kit::between(1e-6, 1e6))
-        .real("B", 1.5, "intermediate principal moment at O", kit::between(1e-6, 1e6))
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::between(1e-6, 1e6))
-        .real("f", 1.0, "f = g L mu", kit::between(1e-6, 1e6));
-}
+// The body of Chapter 5 (and of Chapter 8's grioli_frequency): the moments at O, --A --B --C,
+// and f = g L mu, --f, each in [1e-6, 1e6]; the rules between the moments (A < B < C,
+// A + B >= C) are checked by moments().
+using Body = kit::HeavyBody;
+inline kit::Options& moment_options(kit::Options& opts, Body& b) { return kit::heavy_body_options(opts, b); }
 
 // The moments of --A --B --C. A scene that forms J Omega itself (the residual E - f T of a
 // trial precession, or Euler's equations in a frame where J is not diagonal) loses about
 // eps C / A of its digits there (B Omega_B Omega_C - C Omega_C Omega_B cancels when B and C are
 // close and A is small); it passes the largest C / A for which its checks still hold.
 // rigid::moments' own message is passed on, prefixed by the options it concerns.
-inline rigid::Moments moments(const kit::Options& o, double max_C_over_A = std::numeric_limits<double>::infinity()) {
-    kit::require_moments(o.real("A"), o.real("B"), o.real("C"), {"A", "B", "C"});
+inline rigid::Moments moments(const kit::MomentsAtO& given,
+                              double max_C_over_A = std::numeric_limits<double>::infinity()) {
+    kit::require_moments(given);
     rigid::Moments m{};
     try {
-        m = rigid::moments(o.real("A"), o.real("B"), o.real("C"));  // the exact rule C - B <= A, on the gaps
+        m = rigid::moments(given.A, given.B, given.C);  // the exact rule C - B <= A, on the gaps
     } catch (const std::invalid_argument& e) {
         throw kit::BadInput(std::string("--A, --B, --C: ") + e.what());
     }
     if (!(m.C <= max_C_over_A * m.A))
-        throw kit::BadInput("--A, --C: C / A = " + std::to_string(m.C / m.A) + "; this scene forms J Omega and needs C / A <= " +
-                            std::to_string(max_C_over_A) + " (beyond, the round-off eps C / A of its residuals passes its thresholds)");
+        throw kit::BadInput("--A, --C: C / A = " + std::to_string(m.C / m.A) +
+                            "; this scene forms J Omega and needs C / A <= " + std::to_string(max_C_over_A) +
+                            " (beyond, the round-off eps C / A of its residuals passes its thresholds)");
     return m;
 }
 
@@ -49,9 +48,10 @@ inline double seconds_per_period(const std::string& method, double tol) {
         const char* method;
         double c, p;
     };
-    static const Fit fits[] = {{"rk8pd", 1.9e-6, 8},   {"rkf45", 1.1e-6, 5},   {"rkck", 8e-7, 5},    {"rk4", 7.3e-7, 3.5},
-                               {"rk2", 9.6e-7, 2.8},   {"msadams", 1.4e-5, 11}, {"bsimp", 4e-5, 6.3}, {"msbdf", 2e-5, 7.5},
-                               {"rk4imp", 8e-5, 5.5},  {"rk2imp", 3.2e-5, 3},  {"rk1imp", 6.3e-5, 2}};
+    static const Fit fits[] = {{"rk8pd", 1.9e-6, 8},  {"rkf45", 1.1e-6, 5}, {"rkck", 8e-7, 5},
+                               {"rk4", 7.3e-7, 3.5},  {"rk2", 9.6e-7, 2.8}, {"msadams", 1.4e-5, 11},
+                               {"bsimp", 4e-5, 6.3},  {"msbdf", 2e-5, 7.5}, {"rk4imp", 8e-5, 5.5},
+                               {"rk2imp", 3.2e-5, 3}, {"rk1imp", 6.3e-5, 2}};
     for (const Fit& f : fits)
         if (method == f.method) return 2 * f.c * std::pow(tol, -1.0 / f.p);
     return 1e-3 * std::pow(tol, -0.5);  // an unknown method: assume the worst

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "rigid/grioli.hpp"
 #include "common.hpp"
+#include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
 #include "scene.hpp"
 
@@ -65,19 +65,29 @@ double worst(const Numbers& n, const Reference& r) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    kit::Options opts("grioli_extremes", "Chapter 5: nearly symmetric and flat bodies, f from 1e-6 to 1e6");
-    opts.integer("periods", 100, "periods to integrate per case", 1, 10000);
+struct Params {
+    long periods = 100;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const double periods = double(o.integer("periods"));
-        kit::require_budget(o, {12 * periods, ch5::seconds_per_period("rk8pd", 1e-12), "periods (12 cases)", "--periods"});
+void declare(kit::Options& opts, Params& p) {
+    opts.integer("periods", &p.periods, "periods to integrate per case", 1, 10000);
+}
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("grioli_extremes", "Chapter 5: nearly symmetric and flat bodies, f from 1e-6 to 1e6");
+    declare(opts, p);
+
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const double periods = double(p.periods);
+        kit::require_budget(o,
+                            {12 * periods, ch5::seconds_per_period("rk8pd", 1e-12), "periods (12 cases)", "--periods"});
         // C - A = 0.8 throughout the nearly symmetric cases; the flat ones have C - B = A.
         std::vector<Case> cases = {{1.0, 0.5, 0.7, 1.0}};
         for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, eps * 0.8, (1 - eps) * 0.8, 1.0});
         for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, (1 - eps) * 0.8, eps * 0.8, 1.0});
-        cases.push_back({1.0, 0.5, 1.0, 1.0});    // flat: A + B = C
-        cases.push_back({1.0, 1e-9, 1.0, 1.0});   // flat and nearly symmetric
+        cases.push_back({1.0, 0.5, 1.0, 1.0});   // flat: A + B = C
+        cases.push_back({1.0, 1e-9, 1.0, 1.0});  // flat and nearly symmetric
         cases.push_back({1.0, 0.5, 0.7, 1e-6});
         cases.push_back({1.0, 0.5, 0.7, 1e6});
 
@@ -97,14 +107,18 @@ int main(int argc, char** argv) {
             table.push_back({c.BA / CA, c.CB / CA, (c.A - c.CB) / c.A, c.f, g.theta, e_gap, e_naive,
                              chk.max_rotation_error, chk.max_energy_drift});
         }
-        scene.report.headline("largest relative error of alpha, theta, a, k from the gaps, against long double, over all cases",
-                              worst_gap, closed_time);
-        scene.report.add("worst_integration_error", worst_integration, "max geodesic angle over the periods, every case");
+        scene.report.headline(
+            "largest relative error of alpha, theta, a, k from the gaps, against long double, over all cases",
+            worst_gap, closed_time);
+        scene.report.add("worst_integration_error", worst_integration,
+                         "max geodesic angle over the periods, every case");
         scene.report.add("periods", static_cast<long>(periods));
         scene.report.table("cases",
-                           {"(B-A)/(C-A)", "(C-B)/(C-A)", "(A+B-C)/A", "f", "theta", "err_gaps", "err_naive", "rot_error", "energy_drift"},
+                           {"(B-A)/(C-A)", "(C-B)/(C-A)", "(A+B-C)/A", "f", "theta", "err_gaps", "err_naive",
+                            "rot_error", "energy_drift"},
                            table);
-        scene.report.note("err_gaps: closed form from the gaps; err_naive: B, C rounded first and theta by acos; both "
-                          "against long double. rot_error: rk8pd, tol 1e-12, over the periods.");
+        scene.report.note(
+            "err_gaps: closed form from the gaps; err_naive: B, C rounded first and theta by acos; both "
+            "against long double. rot_error: rk8pd, tol 1e-12, over the periods.");
     });
 }

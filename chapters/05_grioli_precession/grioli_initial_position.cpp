@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
-#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -24,7 +24,9 @@ using std::numbers::pi;
 
 namespace {
 
-std::string xyz(const Vec3& v) { return std::to_string(v.x()) + "," + std::to_string(v.y()) + "," + std::to_string(v.z()); }
+std::string xyz(const Vec3& v) {
+    return std::to_string(v.x()) + "," + std::to_string(v.y()) + "," + std::to_string(v.z());
+}
 
 // Points of the ellipse {c u + s v} scaled in the plane of the unit vectors u, v.
 std::vector<std::vector<double>> ellipse(const Vec3& u, double ru, const Vec3& v, double rv) {
@@ -39,81 +41,118 @@ std::vector<std::vector<double>> ellipse(const Vec3& u, double ru, const Vec3& v
     return pts;
 }
 
+struct Params {
+    ch5::Body body;
+};
+
+struct Placement {
+    rigid::Moments m;
+    double f;
+    rigid::LabPlacement p;
+    double run_time;
+};
+
+Placement compute(const Params& prm) {
+    Placement r{ch5::moments(prm.body.moments, 1e3), prm.body.f, {}, 0};
+    r.run_time =
+        kit::min_time([&] { r.p = rigid::place_item_II(r.m, r.f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX()); });
+    return r;
+}
+
+void report(kit::Scene& scene, const Placement& r) {
+    const rigid::Moments& m = r.m;
+    const rigid::LabPlacement& p = r.p;
+    const Mat3 J_lab = p.R0 * Vec3(m.A, m.B, m.C).asDiagonal() * p.R0.transpose();
+    const double residual =
+        rigid::precession_residual(rigid::heavy_top(J_lab, r.f, p.k, p.z0), {p.a, p.alpha, p.b, p.alpha}, 64);
+    scene.report.headline("RMS |E - f T| / f along R^b(alpha t) R^a(alpha t) for the body placed by Item II", residual,
+                          r.run_time);
+    scene.report.add("theta_deg", p.theta * 180 / pi, "tilt of b from k");
+    scene.report.add("phi_deg", std::acos(rigid::grioli_rotation_vector(m).x()) * 180 / pi,
+                     "angle of z(0) to R_A [P, (int.2)]");
+    scene.report.add("k", p.k);
+    scene.report.add("b", p.b);
+    scene.report.add("a", p.a);
+    scene.report.add("R_A", Vec3(p.R0.col(0)));
+    scene.report.add("R_B", Vec3(p.R0.col(1)));
+    scene.report.add("R_C", Vec3(p.R0.col(2)));
+    scene.report.add("k_body", Vec3(p.R0.transpose() * p.k), "k in the inertia frame: the k of (4.11)");
+    scene.report.add("rule_holds", rigid::item_II_rule_holds(m, p.R0, p.k));
+}
+
+// The arrows and labels of the figure: k, b, a, G, the axes R_A, R_C, O and theta.
+void label(kit::Figure& fig, const rigid::LabPlacement& p) {
+    const Vec3 RA = p.R0.col(0), RC = p.R0.col(2);
+    auto arrow = [&](int id, const Vec3& v, double len, const std::string& colour, const std::string& text,
+                     const Vec3& off) {
+        fig << "set arrow " + std::to_string(id) + " from 0,0,0 to " + xyz(len * v) +
+                   " head filled size 0.08,20 lw 2.5 lc rgb '" + colour + "'\n";
+        fig << "set label " + std::to_string(id) + " '" + text + "' at " + xyz(len * v + off) + " tc rgb '" + colour +
+                   "'\n";
+    };
+    arrow(1, p.k, 1.45, "#000000", "k (up)", Vec3(0.05, 0, 0.08));
+    arrow(2, p.b, 1.3, "#0072B2", "b = R_B(0)", Vec3(0.06, 0, 0.06));
+    arrow(3, p.a, 1.3, "#D55E00", "a = z(0)", Vec3(0.0, 0.0, 0.15));
+    fig << "set label 4 'G' at " + xyz(1.0 * p.z0 + Vec3(0.05, 0, -0.12)) + " tc rgb '#D55E00'\n";
+    fig << "set label 5 'R_A' at " + xyz(1.45 * RA) + " tc rgb '#555555'\n";
+    fig << "set label 6 'R_C' at " + xyz(1.45 * RC) + " tc rgb '#555555'\n";
+    fig << "set label 7 'O' at 0.04,0,-0.12\n";
+    fig << "set label 8 'θ' at " + xyz(0.45 * (p.k + p.b).normalized() + Vec3(0.02, 0, 0.03)) + "\n";
+}
+
+void draw(kit::Scene& scene, const Placement& r) {
+    kit::Figure fig(scene, "initial_position.svg", 820, 720);
+    if (!fig.enabled()) return;
+    const rigid::Moments& m = r.m;
+    const rigid::LabPlacement& p = r.p;
+    const Vec3 RA = p.R0.col(0), RB = p.R0.col(1), RC = p.R0.col(2);
+    // The inertia ellipsoid x.J x = B (so its circular sections have radius 1), drawn small.
+    const double s = 0.9, rA = s * std::sqrt(m.B / m.A), rB = s, rC = s * std::sqrt(m.B / m.C);
+    const Vec3 w = p.a.cross(RB).normalized();  // in the circular section, with R_B
+    fig << "set view 66, 58, 1.3, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
+           "set key at screen 0.01, 0.90 top left font ',10'\n"
+           "set xrange [-1.5:1.5]\nset yrange [-1.5:1.5]\nset zrange [-1.3:1.6]\nset xyplane 0\n"
+           "set title 'Item II at t = 0: k up, b = R_B(0) tilted by θ, a = z(0) along [b, k]'\n";
+    label(fig, p);
+    fig << "splot '-' with lines lc rgb '#999999' dt 2 lw 1.2 title 'inertia axes R_A, R_C', "
+           "'-' with lines lc rgb '#56B4E9' lw 1 title 'inertia ellipsoid at O', "
+           "'-' with lines lc rgb '#009E73' lw 2.5 title 'its circular section, orthogonal to a', "
+           "'-' with lines lc rgb '#E69F00' dt 3 lw 1.5 title 'path of G: a circle about b', "
+           "'-' with points pt 7 ps 1.6 lc rgb '#D55E00' title 'centre of mass G', "
+           "'-' with lines lc rgb '#bbbbbb' lw 1 title 'plane of k and b (the paper sheet)', "
+           "'-' with lines lc rgb '#000000' lw 1 notitle\n";
+    std::vector<std::vector<double>> axes;
+    for (const Vec3& v : {RA, RC}) {
+        const Vec3 q = 1.4 * v;
+        axes.push_back({-q.x(), -q.y(), -q.z()});
+        axes.push_back({q.x(), q.y(), q.z()});
+        axes.push_back({});
+        axes.push_back({});
+    }
+    fig.data(axes);
+    std::vector<std::vector<double>> ell = ellipse(RA, rA, RB, rB), e2 = ellipse(RB, rB, RC, rC),
+                                     e3 = ellipse(RC, rC, RA, rA);
+    ell.insert(ell.end(), e2.begin(), e2.end());
+    ell.insert(ell.end(), e3.begin(), e3.end());
+    fig.data(ell);
+    fig.data(ellipse(RB, s, w, s));                      // the circular section, orthogonal to a
+    fig.data(ellipse(p.z0, 1.0, p.b.cross(p.z0), 1.0));  // the path of G: a circle about b
+    fig.data({{p.z0.x(), p.z0.y(), p.z0.z()}});
+    // The "paper sheet": the plane of k and b (here the plane of e1 and e3).
+    fig.data({{-1.4, 0, -1.1}, {1.4, 0, -1.1}, {1.4, 0, 1.5}, {-1.4, 0, 1.5}, {-1.4, 0, -1.1}});
+    fig.data({{0, 0, -1.1}, {0, 0, 0}});
+    fig.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    Params p;
     kit::Options opts("grioli_initial_position", "Chapter 5: the initial position of Item II (the paper's Figure 1)");
-    ch5::moment_options(opts);
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = ch5::moments(o, 1e3);
-        const double f = o.real("f");
-        rigid::LabPlacement p{};
-        const double run_time = kit::min_time([&] { p = rigid::place_item_II(m, f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX()); });
-        const Mat3 J_lab = p.R0 * Vec3(m.A, m.B, m.C).asDiagonal() * p.R0.transpose();
-        const double residual =
-            rigid::precession_residual(rigid::heavy_top(J_lab, f, p.k, p.z0), {p.a, p.alpha, p.b, p.alpha}, 64);
-        scene.report.headline("RMS |E - f T| / f along R^b(alpha t) R^a(alpha t) for the body placed by Item II", residual, run_time);
-        scene.report.add("theta_deg", p.theta * 180 / pi, "tilt of b from k");
-        scene.report.add("phi_deg", std::acos(rigid::grioli_rotation_vector(m).x()) * 180 / pi, "angle of z(0) to R_A [P, (int.2)]");
-        scene.report.add("k", p.k);
-        scene.report.add("b", p.b);
-        scene.report.add("a", p.a);
-        scene.report.add("R_A", Vec3(p.R0.col(0)));
-        scene.report.add("R_B", Vec3(p.R0.col(1)));
-        scene.report.add("R_C", Vec3(p.R0.col(2)));
-        scene.report.add("k_body", Vec3(p.R0.transpose() * p.k), "k in the inertia frame: the k of (4.11)");
-        scene.report.add("rule_holds", rigid::item_II_rule_holds(m, p.R0, p.k));
-
-        kit::Figure fig(scene, "initial_position.svg", 820, 720);
-        if (!fig.enabled()) return;
-        const Vec3 RA = p.R0.col(0), RB = p.R0.col(1), RC = p.R0.col(2);
-        // The inertia ellipsoid x.J x = B (so its circular sections have radius 1), drawn small.
-        const double s = 0.9, rA = s * std::sqrt(m.B / m.A), rB = s, rC = s * std::sqrt(m.B / m.C);
-        const Vec3 w = p.a.cross(RB).normalized();  // in the circular section, with R_B
-        fig << "set view 66, 58, 1.3, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
-               "set key at screen 0.01, 0.90 top left font ',10'\n"
-               "set xrange [-1.5:1.5]\nset yrange [-1.5:1.5]\nset zrange [-1.3:1.6]\nset xyplane 0\n"
-               "set title 'Item II at t = 0: k up, b = R_B(0) tilted by θ, a = z(0) along [b, k]'\n";
-        auto arrow = [&](int id, const Vec3& v, double len, const std::string& colour, const std::string& label, const Vec3& off) {
-            fig << "set arrow " + std::to_string(id) + " from 0,0,0 to " + xyz(len * v) + " head filled size 0.08,20 lw 2.5 lc rgb '" +
-                       colour + "'\n";
-            fig << "set label " + std::to_string(id) + " '" + label + "' at " + xyz(len * v + off) + " tc rgb '" + colour + "'\n";
-        };
-        arrow(1, p.k, 1.45, "#000000", "k (up)", Vec3(0.05, 0, 0.08));
-        arrow(2, p.b, 1.3, "#0072B2", "b = R_B(0)", Vec3(0.06, 0, 0.06));
-        arrow(3, p.a, 1.3, "#D55E00", "a = z(0)", Vec3(0.0, 0.0, 0.15));
-        fig << "set label 4 'G' at " + xyz(1.0 * p.z0 + Vec3(0.05, 0, -0.12)) + " tc rgb '#D55E00'\n";
-        fig << "set label 5 'R_A' at " + xyz(1.45 * RA) + " tc rgb '#555555'\n";
-        fig << "set label 6 'R_C' at " + xyz(1.45 * RC) + " tc rgb '#555555'\n";
-        fig << "set label 7 'O' at 0.04,0,-0.12\n";
- fig << "set label 8 'θ' at " + xyz(0.45 * (p.k + p.b).normalized() + Vec3(0.02, 0, 0.03)) + "\n";
-        fig << "splot '-' with lines lc rgb '#999999' dt 2 lw 1.2 title 'inertia axes R_A, R_C', "
-               "'-' with lines lc rgb '#56B4E9' lw 1 title 'inertia ellipsoid at O', "
-               "'-' with lines lc rgb '#009E73' lw 2.5 title 'its circular section, orthogonal to a', "
-               "'-' with lines lc rgb '#E69F00' dt 3 lw 1.5 title 'path of G: a circle about b', "
-               "'-' with points pt 7 ps 1.6 lc rgb '#D55E00' title 'centre of mass G', "
-               "'-' with lines lc rgb '#bbbbbb' lw 1 title 'plane of k and b (the paper sheet)', "
-               "'-' with lines lc rgb '#000000' lw 1 notitle\n";
-        std::vector<std::vector<double>> axes;
-        for (const Vec3& v : {RA, RC}) {
-            const Vec3 q = 1.4 * v;
-            axes.push_back({-q.x(), -q.y(), -q.z()});
-            axes.push_back({q.x(), q.y(), q.z()});
-            axes.push_back({});
-            axes.push_back({});
-        }
-        fig.data(axes);
-        std::vector<std::vector<double>> ell = ellipse(RA, rA, RB, rB), e2 = ellipse(RB, rB, RC, rC), e3 = ellipse(RC, rC, RA, rA);
-        ell.insert(ell.end(), e2.begin(), e2.end());
-        ell.insert(ell.end(), e3.begin(), e3.end());
-        fig.data(ell);
-        fig.data(ellipse(RB, s, w, s));                 // the circular section, orthogonal to a
-        fig.data(ellipse(p.z0, 1.0, p.b.cross(p.z0), 1.0));  // the path of G: a circle about b
-        fig.data({{p.z0.x(), p.z0.y(), p.z0.z()}});
-        // The "paper sheet": the plane of k and b (here the plane of e1 and e3).
-        fig.data({{-1.4, 0, -1.1}, {1.4, 0, -1.1}, {1.4, 0, 1.5}, {-1.4, 0, 1.5}, {-1.4, 0, -1.1}});
-        fig.data({{0, 0, -1.1}, {0, 0, 0}});
-        fig.finish();
+    ch5::moment_options(opts, p.body);
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const Placement r = compute(p);
+        report(scene, r);
+        draw(scene, r);
     });
 }

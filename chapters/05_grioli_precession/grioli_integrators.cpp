@@ -8,76 +8,116 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
-#include "common.hpp"
 #include "scene.hpp"
 
-int main(int argc, char** argv) {
-    kit::Options opts("grioli_integrators", "Chapter 5: rotation error against run time over 100 periods, for GSL's integrators");
-    ch5::moment_options(opts)
-        .choice("sense", "ccw", {"ccw", "cw"}, "sense of the precession")
-        .integer("periods", 100, "periods to integrate", 1, 10000)
-        .integer("repeats", 3, "timing: the smallest of this many runs (runs over 0.05 s: one)", 1, 20);
+namespace {
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = ch5::moments(o);
-        const rigid::Sense sense = o.choice("sense") == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
-        const rigid::GrioliPrecession g = rigid::grioli_precession(m, o.real("f"), sense);
-        const double periods = double(o.integer("periods"));
-        const int repeats = static_cast<int>(o.integer("repeats"));
-        const std::vector<std::string> methods = {"rk8pd", "rkck", "rkf45", "msadams", "bsimp", "msbdf", "rk4imp"};
-        const std::vector<double> tols = {1e-6, 1e-8, 1e-10, 1e-12};
-        double per_period = 0;  // every run of the table, `repeats` times when short
-        for (const std::string& method : methods)
-            for (double tol : tols)
-                if (!(method == "rk4imp" && tol < 1e-10)) per_period += ch5::seconds_per_period(method, tol);
-        kit::require_budget(o, {periods * repeats, per_period, "periods (every method and tolerance)", "--periods, --repeats"});
+struct Params {
+    ch5::Body body;
+    std::string sense = "ccw";
+    long periods = 100;
+    int repeats = 3;
+};
 
-        std::vector<std::vector<double>> table;
-        double head_err = 0, head_time = 0;
-        for (std::size_t i = 0; i < methods.size(); ++i)
-            for (double tol : tols) {
-                if (methods[i] == "rk4imp" && tol < 1e-10) continue;  // seconds per run: left out
-                rigid::PrecessionCheck c{};
-                const rigid::OdeSettings s{.method = methods[i], .rel_tol = tol, .abs_tol = tol * std::min(1.0, g.alpha)};
-                // Timing: the smallest of `repeats` runs, but a run of more than 0.05 s is timed once.
-                double t = kit::min_time([&] { c = rigid::integrate_grioli(m, g, periods, 4, s); }, 1);
-                if (t < 0.05 && repeats > 1)
-                    t = std::min(t, kit::min_time([&] { c = rigid::integrate_grioli(m, g, periods, 4, s); }, repeats - 1));
-                table.push_back({double(i), tol, c.max_rotation_error, t, double(c.stats.rhs_calls),
-                                 double(c.stats.jacobian_calls), c.max_energy_drift, c.orthogonality});
-                if (methods[i] == "rk8pd" && tol == 1e-12) head_err = c.max_rotation_error, head_time = t;
-            }
-        scene.report.headline("max rotation error over the periods, rk8pd at tol 1e-12 (geodesic angle, radians)", head_err,
-                              head_time);
-        scene.report.add("periods", static_cast<long>(periods));
-        scene.report.add("alpha", g.alpha);
-        std::string legend;
-        for (std::size_t i = 0; i < methods.size(); ++i) legend += (i ? ", " : "") + std::to_string(i) + " " + methods[i];
-        scene.report.note("method: " + legend);
-        scene.report.table("work_precision",
-                           {"method", "tol", "max_rot_error", "run_time_s", "rhs_calls", "jac_calls", "energy_drift", "orthogonality"},
-                           table);
+void declare(kit::Options& opts, Params& p) {
+    ch5::moment_options(opts, p.body)
+        .choice("sense", &p.sense, {"ccw", "cw"}, "sense of the precession")
+        .integer("periods", &p.periods, "periods to integrate", 1, 10000)
+        .integer("repeats", &p.repeats, "timing: the smallest of this many runs (runs over 0.05 s: one)", 1, 20);
+}
 
-        kit::Figure fig(scene, "integrators_error_vs_time.svg", 820, 520);
-        fig << "set title 'Theorem 1 as a benchmark: " + std::to_string(o.integer("periods")) +
-                   " periods, tolerances 10^{-6} to 10^{-12}'\n"
+const std::vector<std::string> methods = {"rk8pd", "rkck", "rkf45", "msadams", "bsimp", "msbdf", "rk4imp"};
+const std::vector<double> tols = {1e-6, 1e-8, 1e-10, 1e-12};
+// rk4imp below 1e-10 takes seconds per run: left out.
+bool left_out(const std::string& method, double tol) { return method == "rk4imp" && tol < 1e-10; }
+
+void check_budget(const kit::Options& o, const Params& p) {
+    double per_period = 0;  // every run of the table, `repeats` times when short
+    for (const std::string& method : methods)
+        for (double tol : tols)
+            if (!left_out(method, tol)) per_period += ch5::seconds_per_period(method, tol);
+    kit::require_budget(
+        o, {double(p.periods) * p.repeats, per_period, "periods (every method and tolerance)", "--periods, --repeats"});
+}
+
+// Every method at every tolerance. Rows: method, tol, max rotation error, run time, rhs calls,
+// Jacobian calls, energy drift, orthogonality.
+std::vector<std::vector<double>> sweep(const Params& p, const rigid::Moments& m, const rigid::GrioliPrecession& g) {
+    const double periods = double(p.periods);
+    std::vector<std::vector<double>> table;
+    for (std::size_t i = 0; i < methods.size(); ++i)
+        for (double tol : tols) {
+            if (left_out(methods[i], tol)) continue;
+            rigid::PrecessionCheck c{};
+            const rigid::OdeSettings s{.method = methods[i], .rel_tol = tol, .abs_tol = tol * std::min(1.0, g.alpha)};
+            // Timing: the smallest of `repeats` runs, but a run of more than 0.05 s is timed once.
+            double t = kit::min_time([&] { c = rigid::integrate_grioli(m, g, periods, 4, s); }, 1);
+            if (t < 0.05 && p.repeats > 1)
+                t = std::min(t,
+                             kit::min_time([&] { c = rigid::integrate_grioli(m, g, periods, 4, s); }, p.repeats - 1));
+            table.push_back({double(i), tol, c.max_rotation_error, t, double(c.stats.rhs_calls),
+                             double(c.stats.jacobian_calls), c.max_energy_drift, c.orthogonality});
+        }
+    return table;
+}
+
+void report(kit::Scene& scene, const Params& p, const rigid::GrioliPrecession& g,
+            const std::vector<std::vector<double>>& table) {
+    double head_err = 0, head_time = 0;
+    for (const auto& r : table)
+        if (methods[std::size_t(r[0])] == "rk8pd" && r[1] == 1e-12) head_err = r[2], head_time = r[3];
+    scene.report.headline("max rotation error over the periods, rk8pd at tol 1e-12 (geodesic angle, radians)", head_err,
+                          head_time);
+    scene.report.add("periods", static_cast<long>(double(p.periods)));
+    scene.report.add("alpha", g.alpha);
+    std::string legend;
+    for (std::size_t i = 0; i < methods.size(); ++i) legend += (i ? ", " : "") + std::to_string(i) + " " + methods[i];
+    scene.report.note("method: " + legend);
+    scene.report.table(
+        "work_precision",
+        {"method", "tol", "max_rot_error", "run_time_s", "rhs_calls", "jac_calls", "energy_drift", "orthogonality"},
+        table);
+}
+
+void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<double>>& table) {
+    kit::Figure fig(scene, "integrators_error_vs_time.svg", 820, 520);
+    fig << "set title 'Theorem 1 as a benchmark: " + std::to_string(p.periods) +
+               " periods, tolerances 10^{-6} to 10^{-12}'\n"
                "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
                "set xlabel 'run time (s)'\nset ylabel 'max geodesic angle between integrated and exact R(t)'\n"
                "set key outside right top\n";
-        std::string plot = "plot ";
-        for (std::size_t i = 0; i < methods.size(); ++i)
-            plot += std::string(i ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(i + 1) + " title '" +
-                    methods[i] + (i >= 4 ? " (implicit)" : "") + "'";
-        fig << plot + "\n";
-        for (std::size_t i = 0; i < methods.size(); ++i) {
-            std::vector<std::vector<double>> d;
-            for (const auto& r : table)
-                if (r[0] == double(i)) d.push_back({r[3], std::max(r[2], 1e-17)});
-            fig.data(d);
-        }
-        fig.finish();
+    std::string plot = "plot ";
+    for (std::size_t i = 0; i < methods.size(); ++i)
+        plot += std::string(i ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(i + 1) + " title '" +
+                methods[i] + (i >= 4 ? " (implicit)" : "") + "'";
+    fig << plot + "\n";
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        std::vector<std::vector<double>> d;
+        for (const auto& r : table)
+            if (r[0] == double(i)) d.push_back({r[3], std::max(r[2], 1e-17)});
+        fig.data(d);
+    }
+    fig.finish();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("grioli_integrators",
+                      "Chapter 5: rotation error against run time over 100 periods, for GSL's integrators");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const rigid::Moments m = ch5::moments(p.body.moments);
+        const rigid::Sense sense = p.sense == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
+        const rigid::GrioliPrecession g = rigid::grioli_precession(m, p.body.f, sense);
+        check_budget(o, p);
+        const auto table = sweep(p, m, g);
+        report(scene, p, g, table);
+        draw(scene, p, table);
     });
 }

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
-#include "common.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -40,20 +40,21 @@ Paths paths(const rigid::Moments& m, double f, rigid::Sense sense, int samples) 
     const double s = sense == rigid::Sense::ccw ? 1.0 : -1.0, T = 2 * pi / p.alpha;
     Paths out;
     // In the inertia frame, R(0) = 1: Euler's equations on the gaps (Chapter 6 says why).
-    rigid::integrate_gsl([&](double, const VecX& y) {
-                             return rigid::pack(rigid::euler_poisson_rhs_gaps(m, g.f, g.k, g.z0, rigid::unpack(y)));
-                         },
-                         rigid::pack(rigid::grioli_initial_state(g)), rigid::linspace(0, T, samples),
-                         [&](double t, const VecX& y) {
-                             const Mat3 R_lab = p.R0 * rigid::unpack(y).R;  // body -> inertia frame at 0 -> lab
-                             const Mat3 R_exact = rigid::rotation_about(p.b, s * p.alpha * t) *
-                                                  rigid::rotation_about(p.a, s * p.alpha * t) * p.R0;
-                             out.cm.push_back(R_lab * g.z0);
-                             out.tip.push_back(R_lab * Vec3::UnitY());
-                             out.cm_exact.push_back(R_exact * g.z0);
-                             out.tip_exact.push_back(R_exact * Vec3::UnitY());
-                         },
-                         {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, p.alpha)});
+    rigid::integrate_gsl(
+        [&](double, const VecX& y) {
+            return rigid::pack(rigid::euler_poisson_rhs_gaps(m, g.f, g.k, g.z0, rigid::unpack(y)));
+        },
+        rigid::pack(rigid::grioli_initial_state(g)), rigid::linspace(0, T, samples),
+        [&](double t, const VecX& y) {
+            const Mat3 R_lab = p.R0 * rigid::unpack(y).R;  // body -> inertia frame at 0 -> lab
+            const Mat3 R_exact =
+                rigid::rotation_about(p.b, s * p.alpha * t) * rigid::rotation_about(p.a, s * p.alpha * t) * p.R0;
+            out.cm.push_back(R_lab * g.z0);
+            out.tip.push_back(R_lab * Vec3::UnitY());
+            out.cm_exact.push_back(R_exact * g.z0);
+            out.tip_exact.push_back(R_exact * Vec3::UnitY());
+        },
+        {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, p.alpha)});
     return out;
 }
 // end snippet
@@ -64,82 +65,117 @@ std::vector<std::vector<double>> rows(const std::vector<Vec3>& v) {
     return r;
 }
 
+struct Params {
+    ch5::Body body;
+    int samples = 240;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    ch5::moment_options(opts, p.body).integer("samples", &p.samples, "points per period", 16, 100000);
+}
+
+// The two precessions' paths, and the counter-clockwise one's placement in the lab.
+struct Both {
+    Paths ccw, cw;
+    rigid::LabPlacement p;
+    double run_time;
+};
+
+Both compute(const kit::Options& o, const Params& prm) {
+    const rigid::Moments m = ch5::moments(prm.body.moments);
+    const double f = prm.body.f;
+    kit::require_budget(o, {6.0 * prm.samples, 2e-6, "output points", "--samples"});
+    Both r;
+    r.run_time = kit::min_time(
+        [&] {
+            r.ccw = paths(m, f, rigid::Sense::ccw, prm.samples);
+            r.cw = paths(m, f, rigid::Sense::cw, prm.samples);
+        },
+        3);
+    r.p = rigid::place_item_II(m, f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX());
+    return r;
+}
+
+void report(kit::Scene& scene, const Both& r) {
+    double err = 0;
+    for (const Paths* P : {&r.ccw, &r.cw})
+        for (std::size_t i = 0; i < P->cm.size(); ++i)
+            err = std::max({err, (P->cm[i] - P->cm_exact[i]).norm(), (P->tip[i] - P->tip_exact[i]).norm()});
+    scene.report.headline("max distance between integrated and exact paths of G and of the tip of R_B (unit lengths)",
+                          err, r.run_time);
+    scene.report.add("alpha", r.p.alpha);
+    scene.report.add("b", r.p.b, "lab, k = e3");
+    scene.report.add("a", r.p.a, "lab");
+    scene.report.add("cm_height", r.p.z0.z(), "k.z(0): the centre of mass starts level with O");
+    double lowest = 1, highest = -1;
+    for (const Vec3& x : r.ccw.cm_exact) lowest = std::min(lowest, x.z()), highest = std::max(highest, x.z());
+    scene.report.add("cm_height_range", std::vector<double>{lowest, highest}, "+- sin(theta): G circles b");
+}
+
+std::string xyz(const Vec3& v) {
+    return std::to_string(v.x()) + "," + std::to_string(v.y()) + "," + std::to_string(v.z());
+}
+
+// One panel: k, b, arrows along both paths, the paths integrated and exact, their starts.
+void draw_panel(kit::Figure& fig, const Paths& P, const Vec3& b, int panel) {
+    const char* names[] = {"counter-clockwise: R^b(αt) R^a(αt)", "clockwise: R^b(-αt) R^a(-αt)"};
+    fig << std::string("set title '") + names[panel] + "'\n";
+    fig << "set arrow 1 from 0,0,0 to 0,0,1.3 head filled size 0.08,20 lw 2 lc rgb '#000000'\n"
+           "set label 1 'k' at 0.05,0,1.3\n"
+           "set arrow 2 from 0,0,0 to " +
+               xyz(1.2 * b) +
+               " head filled size 0.08,20 lw 2 lc rgb '#0072B2'\n"
+               "set label 2 'b' at " +
+               xyz(1.25 * b) + " tc rgb '#0072B2'\n";
+    // Arrows along both paths show the sense of motion: the clockwise paths are the same
+    // curves, run backwards.
+    int id = 10;
+    for (const std::vector<Vec3>* path : {&P.cm_exact, &P.tip_exact})
+        for (std::size_t i = path->size() / 8; i + 8 < path->size(); i += path->size() / 4)
+            fig << "set arrow " + std::to_string(id++) + " from " + xyz((*path)[i]) + " to " + xyz((*path)[i + 8]) +
+                       " head filled size screen 0.025,20,60 lw 2.5 lc rgb '#000000'\n";
+    // Start markers: where G and the tip are at t = 0.
+    fig << std::string("splot '-' with lines ls 2 lw 2 title ") + (panel ? "''" : "'G, exact'") +
+               ", '-' with points ls 2 pt 7 ps 0.35 title " + (panel ? "''" : "'G, integrated'") +
+               ", '-' with lines ls 3 lw 2 title " + (panel ? "''" : "'tip of R_B, exact'") +
+               ", '-' with points ls 3 pt 7 ps 0.35 title " + (panel ? "''" : "'tip of R_B, integrated'") +
+               ", '-' with points pt 6 ps 1.8 lc rgb '#000000' title " + (panel ? "''" : "'t = 0'") + "\n";
+    std::vector<std::vector<double>> thin_cm, thin_tip;
+    for (std::size_t i = 0; i < P.cm.size(); i += 6) {
+        thin_cm.push_back({P.cm[i].x(), P.cm[i].y(), P.cm[i].z()});
+        thin_tip.push_back({P.tip[i].x(), P.tip[i].y(), P.tip[i].z()});
+    }
+    fig.data(rows(P.cm_exact)).data(thin_cm).data(rows(P.tip_exact)).data(thin_tip);
+    fig.data({{P.cm_exact[0].x(), P.cm_exact[0].y(), P.cm_exact[0].z()},
+              {},
+              {P.tip_exact[0].x(), P.tip_exact[0].y(), P.tip_exact[0].z()}});
+    fig << "unset arrow\n";
+}
+
+void draw(kit::Scene& scene, const Both& r) {
+    kit::Figure fig(scene, "two_precessions.svg", 1000, 600);
+    if (!fig.enabled()) return;
+    fig << "set multiplot layout 1,2 title 'The two regular precessions of Theorem 1, one period, in a lab with k up'\n"
+           "set view 66, 32, 1.45, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
+           "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\nset zrange [-1.2:1.4]\n"
+           "set key at screen 0.5, 0.1 center center horizontal maxrows 2 font ',10'\n";
+    draw_panel(fig, r.ccw, r.p.b, 0);
+    draw_panel(fig, r.cw, r.p.b, 1);
+    fig << "unset multiplot\n";
+    fig.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    kit::Options opts("grioli_paths", "Chapter 5: the two regular precessions (the paper's Figure 4), paths of G and of the tip of R_B");
-    ch5::moment_options(opts)
-        .integer("samples", 240, "points per period", 16, 100000);
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = ch5::moments(o);
-        const double f = o.real("f");
-        const int samples = static_cast<int>(o.integer("samples"));
-        kit::require_budget(o, {6.0 * samples, 2e-6, "output points", "--samples"});
-        Paths ccw, cw;
-        const double run_time = kit::min_time([&] {
-            ccw = paths(m, f, rigid::Sense::ccw, samples);
-            cw = paths(m, f, rigid::Sense::cw, samples);
-        }, 3);
-        double err = 0;
-        for (const Paths* P : {&ccw, &cw})
-            for (std::size_t i = 0; i < P->cm.size(); ++i)
-                err = std::max({err, (P->cm[i] - P->cm_exact[i]).norm(), (P->tip[i] - P->tip_exact[i]).norm()});
-        scene.report.headline("max distance between integrated and exact paths of G and of the tip of R_B (unit lengths)", err,
-                              run_time);
-        const rigid::LabPlacement p = rigid::place_item_II(m, f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX());
-        scene.report.add("alpha", p.alpha);
-        scene.report.add("b", p.b, "lab, k = e3");
-        scene.report.add("a", p.a, "lab");
-        scene.report.add("cm_height", p.z0.z(), "k.z(0): the centre of mass starts level with O");
-        double lowest = 1, highest = -1;
-        for (const Vec3& x : ccw.cm_exact) lowest = std::min(lowest, x.z()), highest = std::max(highest, x.z());
-        scene.report.add("cm_height_range", std::vector<double>{lowest, highest}, "+- sin(theta): G circles b");
-
-        kit::Figure fig(scene, "two_precessions.svg", 1000, 600);
-        if (!fig.enabled()) return;
-        fig << "set multiplot layout 1,2 title 'The two regular precessions of Theorem 1, one period, in a lab with k up'\n"
-               "set view 66, 32, 1.45, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
-               "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\nset zrange [-1.2:1.4]\n"
-               "set key at screen 0.5, 0.1 center center horizontal maxrows 2 font ',10'\n";
-        const char* names[] = {"counter-clockwise: R^b(αt) R^a(αt)", "clockwise: R^b(-αt) R^a(-αt)"};
-        int panel = 0;
-        for (const Paths* P : {&ccw, &cw}) {
-            fig << std::string("set title '") + names[panel] + "'\n";
-            fig << "set arrow 1 from 0,0,0 to 0,0,1.3 head filled size 0.08,20 lw 2 lc rgb '#000000'\n"
-                   "set label 1 'k' at 0.05,0,1.3\n"
-                   "set arrow 2 from 0,0,0 to " + std::to_string(1.2 * p.b.x()) + "," + std::to_string(1.2 * p.b.y()) + "," +
-                       std::to_string(1.2 * p.b.z()) + " head filled size 0.08,20 lw 2 lc rgb '#0072B2'\n"
-                   "set label 2 'b' at " + std::to_string(1.25 * p.b.x()) + "," + std::to_string(1.25 * p.b.y()) + "," +
-                       std::to_string(1.25 * p.b.z()) + " tc rgb '#0072B2'\n";
-            // Arrows along both paths show the sense of motion: the clockwise paths are the same
-            // curves, run backwards.
-            int id = 10;
-            for (const std::vector<Vec3>* path : {&P->cm_exact, &P->tip_exact})
-                for (std::size_t i = path->size() / 8; i + 8 < path->size(); i += path->size() / 4) {
-                    const Vec3 &u = (*path)[i], &v = (*path)[i + 8];
-                    fig << "set arrow " + std::to_string(id++) + " from " + std::to_string(u.x()) + "," + std::to_string(u.y()) +
-                               "," + std::to_string(u.z()) + " to " + std::to_string(v.x()) + "," + std::to_string(v.y()) + "," +
-                               std::to_string(v.z()) + " head filled size screen 0.025,20,60 lw 2.5 lc rgb '#000000'\n";
-                }
-            // Start markers: where G and the tip are at t = 0.
-            fig << std::string("splot '-' with lines ls 2 lw 2 title ") + (panel ? "''" : "'G, exact'") +
-                       ", '-' with points ls 2 pt 7 ps 0.35 title " + (panel ? "''" : "'G, integrated'") +
-                       ", '-' with lines ls 3 lw 2 title " + (panel ? "''" : "'tip of R_B, exact'") +
-                       ", '-' with points ls 3 pt 7 ps 0.35 title " + (panel ? "''" : "'tip of R_B, integrated'") +
-                       ", '-' with points pt 6 ps 1.8 lc rgb '#000000' title " + (panel ? "''" : "'t = 0'") + "\n";
-            std::vector<std::vector<double>> thin_cm, thin_tip;
-            for (std::size_t i = 0; i < P->cm.size(); i += 6) {
-                thin_cm.push_back({P->cm[i].x(), P->cm[i].y(), P->cm[i].z()});
-                thin_tip.push_back({P->tip[i].x(), P->tip[i].y(), P->tip[i].z()});
-            }
-            fig.data(rows(P->cm_exact)).data(thin_cm).data(rows(P->tip_exact)).data(thin_tip);
-            fig.data({{P->cm_exact[0].x(), P->cm_exact[0].y(), P->cm_exact[0].z()}, {},
-                      {P->tip_exact[0].x(), P->tip_exact[0].y(), P->tip_exact[0].z()}});
-            fig << "unset arrow\n";
-            ++panel;
-        }
-        fig << "unset multiplot\n";
-        fig.finish();
+    Params p;
+    kit::Options opts(
+        "grioli_paths",
+        "Chapter 5: the two regular precessions (the paper's Figure 4), paths of G and of the tip of R_B");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const Both r = compute(o, p);
+        report(scene, r);
+        draw(scene, r);
     });
 }

@@ -17,17 +17,20 @@ using rigid::BodyAtG;
 using rigid::Mat3;
 using rigid::Vec3;
 
-// --Ag --Bg --Cg --mu, each a finite number > 0; the rules between them are checked by body().
-inline void body_options(kit::Options& o, double A_g = 1.0, double B_g = 2.0, double C_g = 2.5, double mu = 1.0) {
-    o.real("Ag", A_g, "smallest principal moment at the centre of mass, A_g", kit::between(1e-6, 1e6))
-        .real("Bg", B_g, "intermediate principal moment at the centre of mass, B_g", kit::between(1e-6, 1e6))
-        .real("Cg", C_g, "largest principal moment at the centre of mass, C_g", kit::between(1e-6, 1e6))
-        .real("mu", mu, "total mass mu", kit::between(1e-6, 1e6));
+// The body of the Chapter 6 scenes unless the options say otherwise.
+inline constexpr BodyAtG default_body{1.0, 2.0, 2.5, 1.0};
+
+// --Ag --Bg --Cg --mu bound to b (its values are the defaults), each a finite number > 0; the
+// rules between them are checked by body().
+inline void body_options(kit::Options& o, BodyAtG& b) {
+    o.real("Ag", &b.A_g, "smallest principal moment at the centre of mass, A_g", kit::between(1e-6, 1e6))
+        .real("Bg", &b.B_g, "intermediate principal moment at the centre of mass, B_g", kit::between(1e-6, 1e6))
+        .real("Cg", &b.C_g, "largest principal moment at the centre of mass, C_g", kit::between(1e-6, 1e6))
+        .real("mu", &b.mu, "total mass mu", kit::between(1e-6, 1e6));
 }
 
 // The body of the options, or BadInput naming the options and the rule they break.
-inline BodyAtG body(const kit::Options& o) {
-    const BodyAtG b{o.real("Ag"), o.real("Bg"), o.real("Cg"), o.real("mu")};
+inline BodyAtG body(const BodyAtG& b) {
     kit::require_moments(b.A_g, b.B_g, b.C_g, {"Ag", "Bg", "Cg"}, {kit::Order::increasing, kit::Triangle::strict});
     try {
         rigid::require_body(b);
@@ -56,27 +59,27 @@ template <class T>
 struct Printed {
     T h, zA, zC;
     T Ag, Bg, Cg;
-    T dplus() const { return Ag * zA * zA + Cg * zC * zC; }                 // (5.5)
+    T dplus() const { return Ag * zA * zA + Cg * zC * zC; }                               // (5.5)
     T D1() const { return (Ag + Cg + h) * (Ag + Cg + h) - 4 * (Ag * Cg + h * dplus()); }  // (5.4)
     T D2() const { return h * h + 2 * (Cg + Ag - 2 * dplus()) * h + (Cg - Ag) * (Cg - Ag); }
     T D3() const { return h * h + 2 * (Cg - Ag) * (zA * zA - zC * zC) * h + (Cg - Ag) * (Cg - Ag); }
-    T C() const { return (Ag + Cg + h + root(D3())) / 2; }                 // (5.3)
+    T C() const { return (Ag + Cg + h + root(D3())) / 2; }  // (5.3)
     T B() const { return Bg + h; }
     T A() const { return (Ag + Cg + h - root(D3())) / 2; }
-    T alpha510() const { return -h + 2 * h * zA * zA + (Cg - Ag); }        // (5.10): not a frequency
+    T alpha510() const { return -h + 2 * h * zA * zA + (Cg - Ag); }  // (5.10): not a frequency
     T D510() const { return alpha510() * alpha510() + 4 * h * h * zA * zA * zC * zC; }
-    T vC_over_vA_first() const { return (Ag - A() + h * zC * zC) / (h * zA * zC); }        // (5.9)
+    T vC_over_vA_first() const { return (Ag - A() + h * zC * zC) / (h * zA * zC); }  // (5.9)
     T vC_over_vA() const { return (root(D3()) - alpha510()) / (2 * h * zA * zC); }
-    T cos2_511() const {                                                    // (5.11) solved for cos^2
+    T cos2_511() const {  // (5.11) solved for cos^2
         const T s = root(D3()), t = 2 * h * zA * zA + s - alpha510();
         return zC * zC * t * t / (2 * s * (s - alpha510()));
     }
-    T cos2_512() const {                                                    // (5.12)
+    T cos2_512() const {  // (5.12)
         const T c2g = zA * zA - zC * zC;
         return T(0.5) + (h + (Cg - Ag) * c2g) / (2 * root(h * h + 2 * h * (Cg - Ag) * c2g + (Cg - Ag) * (Cg - Ag)));
     }
-    T ratio_513() const { return T(0.5) + (2 * Bg - Ag - Cg + h) / (2 * root(D3())); }   // (5.13)
-    T h_crit_58() const { return -(Bg - Ag) * (Cg - Bg) / (Cg + Ag - Bg - dplus()); }      // (5.8)
+    T ratio_513() const { return T(0.5) + (2 * Bg - Ag - Cg + h) / (2 * root(D3())); }  // (5.13)
+    T h_crit_58() const { return -(Bg - Ag) * (Cg - Bg) / (Cg + Ag - Bg - dplus()); }   // (5.8)
 };
 // end snippet
 

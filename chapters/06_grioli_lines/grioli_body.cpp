@@ -21,8 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <string>
 #include <numbers>
+#include <string>
 
 #include "../05_grioli_precession/common.hpp"
 #include "common.hpp"
@@ -42,120 +42,177 @@ std::string sci(double x) {
     return buf;
 }
 
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    double g = 9.81;
+    double L = 0.5;
+    int line = 1;
+    std::string sense = "ccw";
+    std::string form = "gaps";
+    long periods = 100;
+    double tol = 1e-13;
+};
+
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.real("g", &p.g, "acceleration of gravity g", kit::between(1e-6, 1e6))
+        .real("L", &p.L,
+              "distance from the centre of mass G to the suspension point O, along the Grioli line "
+              "(1e-6 to 1e8 body sizes sqrt(C_g / mu))",
+              kit::between(1e-12, 1e14))
+        .integer("line", &p.line, "which Grioli line (5.15): +1 for x_C = +k x_A, -1 for x_C = -k x_A", -1, 1)
+        .choice("sense", &p.sense, {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
+        .choice("form", &p.form, {"gaps", "naive"},
+                "Euler's equations on the moment gaps, or the naive form (J Omega) x Omega of Chapter 4")
+        .integer("periods", &p.periods, "periods 2 pi / alpha to integrate", 1, 100000)
+        .real("tol", &p.tol, "rk8pd relative tolerance", kit::between(1e-15, 1e-2));
+}
+
+void check(const kit::Options& o, const Params& p) {
+    const double size = ch6::size_of(ch6::body(p.body));
+    if (!(p.L >= 1e-6 * size && p.L <= 1e8 * size))
+        throw kit::BadInput(
+            "--L: got " + std::to_string(p.L) + ", " + std::to_string(p.L / size) +
+            " body sizes; it must be from 1e-6 to 1e8 body sizes sqrt(C_g / mu) = " + std::to_string(size));
+    if (p.line == 0) throw kit::BadInput("--line: got 0; it must be +1 or -1");
+    // The work: about ch5::seconds_per_period per period, three timed runs when they are short.
+    kit::require_budget(
+        o, {3.0 * double(p.periods), ch5::seconds_per_period("rk8pd", p.tol), "periods of rk8pd", "--periods, --tol"});
+}
+
+// The body hung on the line, Theorem 1's precession for it, and its own equations of motion.
+struct Hung {
+    rigid::GrioliSuspension s;
+    rigid::Moments m;
+    double f;
+    rigid::GrioliPrecession P;
+    Mat3 Q;
+    Vec3 z0;
+    rigid::OdeRhs rhs;
+    double period;
+    std::vector<double> times;
+};
+
+Hung hang(const Params& p) {
+    const rigid::BodyAtG body = ch6::body(p.body);
+    const double L = p.L, grav = p.g;
+    const int line = p.line;
+    const bool gaps = p.form == "gaps";
+    const long periods = p.periods;
+    // snippet: grioli_body
+    // 1-2. The suspension point on the Grioli line, and the moments and axes there.
+    const rigid::GrioliSuspension s = rigid::grioli_suspension(body, L, line);
+    const rigid::ShiftedMoments& sm = s.frame.moments;
+    const rigid::Moments m = rigid::moments_from_gaps(sm.A, sm.B_minus_A, sm.C_minus_B);
+
+    // 3. Theorem 1's precession for these moments and f = g L mu.
+    const double f = grav * L * body.mu;
+    const rigid::Sense sense = p.sense == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
+    const rigid::GrioliPrecession P = rigid::grioli_precession(m, f, sense);
+
+    // The principal frame at O is fixed only up to half-turns about its axes; pick the one
+    // in which the centre of mass lies along +a, as Theorem 1 places the body.
+    const double dA = s.z0.x() * P.z0.x() >= 0 ? 1 : -1, dC = s.z0.z() * P.z0.z() >= 0 ? 1 : -1;
+    const Mat3 Q = s.frame.R * Vec3(dA, dA * dC, dC).asDiagonal();  // still right-handed
+    const Vec3 z0 = (Q.transpose() * -s.z).normalized();            // O -> G, body frame
+
+    // 4. The body's own equations in its principal frame at O, from the precession's initial
+    // state: Euler's equations on the gaps of step 1 (or, to see why, the naive form).
+    const rigid::HeavyTop naive = rigid::heavy_top(Vec3(sm.A, sm.B, sm.C).asDiagonal(), f, P.k, z0);
+    const rigid::OdeRhs rhs = [=](double, const rigid::VecX& y) {
+        const rigid::BodyState x = rigid::unpack(y);
+        return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(m, f, P.k, z0, x) : rigid::euler_poisson_rhs(naive, x));
+    };
+    const double period = 2 * std::numbers::pi / P.alpha;
+    const auto times = rigid::linspace(0, periods * period, static_cast<int>(16 * periods));
+    // end snippet
+    return {s, m, f, P, Q, z0, rhs, period, times};
+}
+
+struct Integration {
+    double max_error = 0, run_time = 0;
+    rigid::OdeStats stats;
+};
+
+// The equations integrated from the precession's initial state (timed: three runs when short),
+// against R^b(alpha t) R^a(alpha t).
+Integration integrate(const kit::Options& o, const Params& p, const Hung& h) {
+    const rigid::ShiftedMoments& sm = h.s.frame.moments;
+    // Steps are capped by the budget: the naive form far out would otherwise run for hours.
+    const long max_steps = std::max(1000L, static_cast<long>(o.budget_s() / 3 / 2e-6 / double(h.times.size())));
+    Integration r;
+    const auto run = [&] {
+        r.max_error = 0;
+        r.stats = rigid::integrate_gsl(
+            h.rhs, rigid::pack(rigid::grioli_initial_state(h.P)), h.times,
+            [&](double t, const rigid::VecX& y) {
+                r.max_error =
+                    std::max(r.max_error, rigid::geodesic_angle(rigid::unpack(y).R, rigid::grioli_rotation(h.P, t)));
+            },
+            {.method = "rk8pd", .rel_tol = p.tol, .abs_tol = p.tol * std::min(1.0, h.P.alpha), .max_steps = max_steps});
+    };
+    try {
+        r.run_time = kit::min_time(run, 1);
+        if (r.run_time < 0.1) r.run_time = std::min(r.run_time, kit::min_time(run, 2));
+    } catch (const std::runtime_error& e) {
+        throw kit::NumericalFailure(std::string(e.what()) + " (more than " + std::to_string(max_steps) +
+                                    " steps between two outputs, the budget's share" +
+                                    (p.form == "gaps"
+                                         ? std::string(")")
+                                         : "; the naive form's steps chase round-off of relative size eps B / A = " +
+                                               sci(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
+                                               " in Omega_dot_A: try --form gaps)"));
+    }
+    if (!std::isfinite(r.max_error)) throw kit::NumericalFailure("the integration produced a non-finite rotation");
+    return r;
+}
+
+void report(kit::Scene& scene, const Params& p, const Hung& h, const Integration& r) {
+    const rigid::GrioliSuspension& s = h.s;
+    const rigid::ShiftedMoments& sm = s.frame.moments;
+    scene.report.headline(
+        "max over t of the geodesic angle between the body's integrated R(t) and "
+        "R^b(alpha t) R^a(alpha t) of Theorem 1",
+        r.max_error, r.run_time);
+    const Mat3 J_body = h.Q.transpose() * s.frame.I * h.Q;  // the body's tensor (5.2) in that frame
+    scene.report.add("form", p.form, "Euler's equations on the gaps, or naive");
+    scene.report.add("A", sm.A, "principal moments at O (5.3)");
+    scene.report.add("B", sm.B);
+    scene.report.add("C", sm.C);
+    scene.report.add("C_minus_B", sm.C_minus_B, "the gap, from Chapter 6's closed form");
+    scene.report.add("C_minus_B_in_double", sm.C - sm.B, "the same gap from C and B rounded to double");
+    scene.report.add("naive_round_off", std::numeric_limits<double>::epsilon() * sm.B / sm.A,
+                     "eps B / A: the relative round-off the naive form leaves in Omega_dot_A");
+    scene.report.add("body_sizes", p.L / ch6::size_of(p.body), "L in body sizes sqrt(C_g / mu)");
+    scene.report.add("phi_g", std::atan2(s.z.z(), s.z.x()), "angle of the line from x_A at G, radians (5.14)");
+    scene.report.add("cos2phi", s.tilt.cos2, "cos^2 of the angle between R_A at O and the line OG (5.12)");
+    scene.report.add("cos2phi_expected", s.expected.cos2, "(B - A)/(C - A), Theorem 1's condition (5.13)");
+    scene.report.add("cos2phi_mismatch", std::abs(s.tilt.cos2 - s.expected.cos2) / s.expected.cos2, "relative");
+    scene.report.add("alpha", h.P.alpha, "[P, (int.4)] with f = g L mu");
+    scene.report.add("f", h.f);
+    scene.report.add("O", s.O, "suspension point from G, principal axes at G");
+    scene.report.add("z0", h.z0, "O -> G in the principal frame at O");
+    scene.report.add("z0_minus_a", (h.z0 - h.P.z0).norm(), "|z(0) - a|: the body's centre of mass against Theorem 1's");
+    scene.report.add("J_offdiagonal", (J_body - Vec3(sm.A, sm.B, sm.C).asDiagonal().toDenseMatrix()).norm() / sm.C,
+                     "|J - diag(A, B, C)| / C: the body's tensor (5.2) against the closed-form moments");
+    scene.report.add("sense", p.sense);
+    scene.report.add("periods", p.periods);
+    scene.report.add("rhs_calls", r.stats.rhs_calls, "one run");
+    scene.report.add("max_rotation_error", r.max_error, "radians");
+    scene.report.add("period", h.period);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    kit::Options opts("grioli_body",
-                      "Chapter 6: a body given at its centre of mass, hung on a Grioli line, precessing as Theorem 1 says");
-    ch6::body_options(opts);
-    opts.real("g", 9.81, "acceleration of gravity g", kit::between(1e-6, 1e6))
-        .real("L", 0.5, "distance from the centre of mass G to the suspension point O, along the Grioli line "
-                        "(1e-6 to 1e8 body sizes sqrt(C_g / mu))",
-              kit::between(1e-12, 1e14))
-        .integer("line", 1, "which Grioli line (5.15): +1 for x_C = +k x_A, -1 for x_C = -k x_A", -1, 1)
-        .choice("sense", "ccw", {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
-        .choice("form", "gaps", {"gaps", "naive"},
-                "Euler's equations on the moment gaps, or the naive form (J Omega) x Omega of Chapter 4")
-        .integer("periods", 100, "periods 2 pi / alpha to integrate", 1, 100000)
-        .real("tol", 1e-13, "rk8pd relative tolerance", kit::between(1e-15, 1e-2));
-
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::BodyAtG body = ch6::body(o);
-        const double L = o.real("L"), grav = o.real("g"), size = ch6::size_of(body);
-        if (!(L >= 1e-6 * size && L <= 1e8 * size))
-            throw kit::BadInput("--L: got " + std::to_string(L) + ", " + std::to_string(L / size) +
-                                " body sizes; it must be from 1e-6 to 1e8 body sizes sqrt(C_g / mu) = " + std::to_string(size));
-        const int line = static_cast<int>(o.integer("line"));
-        if (line == 0) throw kit::BadInput("--line: got 0; it must be +1 or -1");
-        const long periods = o.integer("periods");
-        const bool gaps = o.choice("form") == "gaps";
-        const double tol = o.real("tol");
-        // The work: about ch5::seconds_per_period per period, three timed runs when they are short.
-        kit::require_budget(o, {3.0 * double(periods), ch5::seconds_per_period("rk8pd", tol), "periods of rk8pd", "--periods, --tol"});
-
-        // snippet: grioli_body
-        // 1-2. The suspension point on the Grioli line, and the moments and axes there.
-        const rigid::GrioliSuspension s = rigid::grioli_suspension(body, L, line);
-        const rigid::ShiftedMoments& sm = s.frame.moments;
-        const rigid::Moments m = rigid::moments_from_gaps(sm.A, sm.B_minus_A, sm.C_minus_B);
-
-        // 3. Theorem 1's precession for these moments and f = g L mu.
-        const double f = grav * L * body.mu;
-        const rigid::Sense sense = o.choice("sense") == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
-        const rigid::GrioliPrecession P = rigid::grioli_precession(m, f, sense);
-
-        // The principal frame at O is fixed only up to half-turns about its axes; pick the one
-        // in which the centre of mass lies along +a, as Theorem 1 places the body.
-        const double dA = s.z0.x() * P.z0.x() >= 0 ? 1 : -1, dC = s.z0.z() * P.z0.z() >= 0 ? 1 : -1;
-        const Mat3 Q = s.frame.R * Vec3(dA, dA * dC, dC).asDiagonal();  // still right-handed
-        const Vec3 z0 = (Q.transpose() * -s.z).normalized();            // O -> G, body frame
-
-        // 4. The body's own equations in its principal frame at O, from the precession's initial
-        // state: Euler's equations on the gaps of step 1 (or, to see why, the naive form).
-        const rigid::HeavyTop naive = rigid::heavy_top(Vec3(sm.A, sm.B, sm.C).asDiagonal(), f, P.k, z0);
-        const rigid::OdeRhs rhs = [&](double, const rigid::VecX& y) {
-            const rigid::BodyState x = rigid::unpack(y);
-            return rigid::pack(gaps ? rigid::euler_poisson_rhs_gaps(m, f, P.k, z0, x) : rigid::euler_poisson_rhs(naive, x));
-        };
-        const double period = 2 * std::numbers::pi / P.alpha;
-        const auto times = rigid::linspace(0, periods * period, static_cast<int>(16 * periods));
-        // end snippet
-        // Steps are capped by the budget: the naive form far out would otherwise run for hours.
-        const long max_steps = std::max(1000L, static_cast<long>(o.budget_s() / 3 / 2e-6 / double(times.size())));
-        double max_error = 0;
-        rigid::OdeStats stats;
-        const auto run = [&] {
-            max_error = 0;
-            stats = rigid::integrate_gsl(rhs, rigid::pack(rigid::grioli_initial_state(P)), times,
-                                         [&](double t, const rigid::VecX& y) {
-                                             max_error = std::max(max_error, rigid::geodesic_angle(rigid::unpack(y).R,
-                                                                                                   rigid::grioli_rotation(P, t)));
-                                         },
-                                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol * std::min(1.0, P.alpha),
-                                          .max_steps = max_steps});
-        };
-        double run_time = 0;
-        try {
-            run_time = kit::min_time(run, 1);
-            if (run_time < 0.1) run_time = std::min(run_time, kit::min_time(run, 2));
-        } catch (const std::runtime_error& e) {
-            throw kit::NumericalFailure(std::string(e.what()) + " (more than " + std::to_string(max_steps) +
-                                        " steps between two outputs, the budget's share" +
-                                        (gaps ? std::string(")")
-                                              : "; the naive form's steps chase round-off of relative size eps B / A = " +
-                                                    sci(std::numeric_limits<double>::epsilon() * sm.B / sm.A) +
-                                                    " in Omega_dot_A: try --form gaps)"));
-        }
-        if (!std::isfinite(max_error)) throw kit::NumericalFailure("the integration produced a non-finite rotation");
-
-        scene.report.headline("max over t of the geodesic angle between the body's integrated R(t) and "
-                              "R^b(alpha t) R^a(alpha t) of Theorem 1",
-                              max_error, run_time);
-        const Mat3 J_body = Q.transpose() * s.frame.I * Q;  // the body's tensor (5.2) in that frame
-        scene.report.add("form", o.choice("form"), "Euler's equations on the gaps, or naive");
-        scene.report.add("A", sm.A, "principal moments at O (5.3)");
-        scene.report.add("B", sm.B);
-        scene.report.add("C", sm.C);
-        scene.report.add("C_minus_B", sm.C_minus_B, "the gap, from Chapter 6's closed form");
-        scene.report.add("C_minus_B_in_double", sm.C - sm.B, "the same gap from C and B rounded to double");
-        scene.report.add("naive_round_off", std::numeric_limits<double>::epsilon() * sm.B / sm.A,
-                         "eps B / A: the relative round-off the naive form leaves in Omega_dot_A");
-        scene.report.add("body_sizes", L / size, "L in body sizes sqrt(C_g / mu)");
-        scene.report.add("phi_g", std::atan2(s.z.z(), s.z.x()), "angle of the line from x_A at G, radians (5.14)");
-        scene.report.add("cos2phi", s.tilt.cos2, "cos^2 of the angle between R_A at O and the line OG (5.12)");
-        scene.report.add("cos2phi_expected", s.expected.cos2, "(B - A)/(C - A), Theorem 1's condition (5.13)");
-        scene.report.add("cos2phi_mismatch", std::abs(s.tilt.cos2 - s.expected.cos2) / s.expected.cos2, "relative");
-        scene.report.add("alpha", P.alpha, "[P, (int.4)] with f = g L mu");
-        scene.report.add("f", f);
-        scene.report.add("O", s.O, "suspension point from G, principal axes at G");
-        scene.report.add("z0", z0, "O -> G in the principal frame at O");
-        scene.report.add("z0_minus_a", (z0 - P.z0).norm(), "|z(0) - a|: the body's centre of mass against Theorem 1's");
-        scene.report.add("J_offdiagonal", (J_body - Vec3(sm.A, sm.B, sm.C).asDiagonal().toDenseMatrix()).norm() / sm.C,
-                         "|J - diag(A, B, C)| / C: the body's tensor (5.2) against the closed-form moments");
-        scene.report.add("sense", o.choice("sense"));
-        scene.report.add("periods", periods);
-        scene.report.add("rhs_calls", stats.rhs_calls, "one run");
-        scene.report.add("max_rotation_error", max_error, "radians");
-        scene.report.add("period", period);
+    Params p;
+    kit::Options opts(
+        "grioli_body",
+        "Chapter 6: a body given at its centre of mass, hung on a Grioli line, precessing as Theorem 1 says");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        check(o, p);
+        const Hung h = hang(p);
+        report(scene, p, h, integrate(o, p, h));
     });
 }

@@ -16,122 +16,181 @@
 
 using namespace ch6;
 
-int main(int argc, char** argv) {
-    kit::Options opts("regions_plane", "Chapter 6, Figure 5: regions I-VI of the principal plane, hyperbola (5.7), Grioli lines (5.15)");
-    body_options(opts);
-    opts.integer("lines", 64, "lines below the critical angle on which B = C is found by bisection", 4, 4096)
-        .integer("grid", 121, "grid points per side for the region check", 11, 1001);
+struct Params {
+    rigid::BodyAtG body = ch6::default_body;
+    int lines = 64;
+    int grid = 121;
+};
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const BodyAtG b = body(o);
-        const double dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g;
-        const double crit = rigid::critical_cos2(b);
+void declare(kit::Options& opts, Params& p) {
+    ch6::body_options(opts, p.body);
+    opts.integer("lines", &p.lines, "lines below the critical angle on which B = C is found by bisection", 4, 4096)
+        .integer("grid", &p.grid, "grid points per side for the region check", 11, 1001);
+}
 
-        // (5.7) and (5.8) at the eigen-solver's crossings.
-        const int lines = static_cast<int>(o.integer("lines"));
-        double err_hyperbola = 0, err_hcrit = 0, err_hcrit_printed = 0;
-        for (int i = 0; i < lines; ++i) {
-            const double c2 = crit * (i + 0.5) / lines;  // cos^2 phi_g in (0, crit)
-            const Vec3 z(std::sqrt(c2), 0, (i % 2 ? -1 : 1) * std::sqrt(1 - c2));
-            const double h = crossing_by_bisection(b, z).h(), L = std::sqrt(h / b.mu);
-            err_hyperbola = std::max(err_hyperbola, std::abs(rigid::hyperbola_lhs(b, L * z.x(), L * z.z()) - 1));
-            err_hcrit = std::max(err_hcrit, std::abs(rigid::critical_h(b, z) - h) / h);
-            err_hcrit_printed = std::max(err_hcrit_printed, std::abs(printed(b, L, z).h_crit_58() - h) / h);
-        }
+namespace {
 
-        // region() against the order of Eigen's moments on a grid.
-        const int n = static_cast<int>(o.integer("grid"));
-        const double R = 2.5 * std::sqrt(std::max(dBA, dCB) / b.mu);
-        long mismatches = 0, checked = 0;
-        std::vector<std::pair<double, double>> pts;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) pts.emplace_back(R * (2.0 * i / (n - 1) - 1) + 1e-9 * R, R * (2.0 * j / (n - 1) - 1) + 2e-9 * R);
-        std::vector<int> regions(pts.size());
-        const double t_region = kit::min_time([&] {
-            for (std::size_t p = 0; p < pts.size(); ++p) regions[p] = rigid::region(b, pts[p].first, pts[p].second);
-            kit::keep(regions);
-        });
-        std::vector<EigenMoments> eig(pts.size());
-        const double t_eigen = kit::min_time([&] {
+// (5.7) and (5.8) at the eigen-solver's crossings, over `lines` lines below the critical angle.
+struct Crossings {
+    double hyperbola = 0, hcrit = 0, hcrit_printed = 0;
+};
+
+Crossings crossings(const BodyAtG& b, int lines) {
+    const double crit = rigid::critical_cos2(b);
+    Crossings err;
+    for (int i = 0; i < lines; ++i) {
+        const double c2 = crit * (i + 0.5) / lines;  // cos^2 phi_g in (0, crit)
+        const Vec3 z(std::sqrt(c2), 0, (i % 2 ? -1 : 1) * std::sqrt(1 - c2));
+        const double h = crossing_by_bisection(b, z).h(), L = std::sqrt(h / b.mu);
+        err.hyperbola = std::max(err.hyperbola, std::abs(rigid::hyperbola_lhs(b, L * z.x(), L * z.z()) - 1));
+        err.hcrit = std::max(err.hcrit, std::abs(rigid::critical_h(b, z) - h) / h);
+        err.hcrit_printed = std::max(err.hcrit_printed, std::abs(printed(b, L, z).h_crit_58() - h) / h);
+    }
+    return err;
+}
+
+// The half-width of the figure and of the region grid.
+double plane_radius(const BodyAtG& b) { return 2.5 * std::sqrt(std::max(b.B_g - b.A_g, b.C_g - b.B_g) / b.mu); }
+
+// region() against the order of Eigen's moments on an n x n grid, and both timed.
+struct RegionCheck {
+    long mismatches = 0, checked = 0;
+    std::size_t points;
+    double t_region, t_eigen;  // per point
+};
+
+RegionCheck check_regions(const BodyAtG& b, int n) {
+    const double R = plane_radius(b);
+    std::vector<std::pair<double, double>> pts;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            pts.emplace_back(R * (2.0 * i / (n - 1) - 1) + 1e-9 * R, R * (2.0 * j / (n - 1) - 1) + 2e-9 * R);
+    std::vector<int> regions(pts.size());
+    const double t_region = kit::min_time([&] {
+        for (std::size_t p = 0; p < pts.size(); ++p) regions[p] = rigid::region(b, pts[p].first, pts[p].second);
+        kit::keep(regions);
+    });
+    std::vector<EigenMoments> eig(pts.size());
+    const double t_eigen = kit::min_time(
+        [&] {
             for (std::size_t p = 0; p < pts.size(); ++p) {
                 const double L = std::hypot(pts[p].first, pts[p].second);
                 eig[p] = eigen_moments(tensor_at(b, L, Vec3(pts[p].first / L, 0, pts[p].second / L)));
             }
             kit::keep(eig);
-        }, 2);
-        for (std::size_t p = 0; p < pts.size(); ++p) {
-            if (regions[p] == 0) continue;
-            ++checked;
-            const bool abc = eig[p].A < eig[p].B && eig[p].B < eig[p].C;
-            if (abc != (regions[p] <= 4)) ++mismatches;
-        }
+        },
+        2);
+    RegionCheck r{0, 0, pts.size(), t_region / static_cast<double>(pts.size()),
+                  t_eigen / static_cast<double>(pts.size())};
+    for (std::size_t p = 0; p < pts.size(); ++p) {
+        if (regions[p] == 0) continue;
+        ++r.checked;
+        const bool abc = eig[p].A < eig[p].B && eig[p].B < eig[p].C;
+        if (abc != (regions[p] <= 4)) ++r.mismatches;
+    }
+    return r;
+}
 
-        // Grioli's description: the circular sections of x^T I_G x = 1.
-        const auto normals = rigid::circular_section_normals(Vec3(b.A_g, b.B_g, b.C_g).asDiagonal());
-        double angle = 0;
-        for (int s : {1, -1}) {
-            const Vec3 z = rigid::grioli_direction(b, s);
-            const Vec3& nrm = normals[s == 1 ? 0 : 1];
-            angle = std::max(angle, std::atan2(z.cross(nrm).norm(), std::abs(z.dot(nrm))));
-        }
+// Grioli's description: the largest angle between the lines (5.15) and the normals of the
+// circular sections of x^T I_G x = 1.
+double grioli_vs_sections(const BodyAtG& b) {
+    const auto normals = rigid::circular_section_normals(Vec3(b.A_g, b.B_g, b.C_g).asDiagonal());
+    double angle = 0;
+    for (int s : {1, -1}) {
+        const Vec3 z = rigid::grioli_direction(b, s);
+        const Vec3& nrm = normals[s == 1 ? 0 : 1];
+        angle = std::max(angle, std::atan2(z.cross(nrm).norm(), std::abs(z.dot(nrm))));
+    }
+    return angle;
+}
 
-        scene.report.headline("max |(5.7) - 1| where the eigen-solver finds B = C (bisection), over the lines", err_hyperbola,
-                              t_region / static_cast<double>(pts.size()));
-        scene.report.add("critical_cos2", crit, "(5.6)");
-        scene.report.add("h_crit_rel_error", err_hcrit, "(5.8) rewritten, against the bisection");
-        scene.report.add("h_crit_printed_rel_error", err_hcrit_printed, "(5.8) as printed, against the bisection");
-        scene.report.add("region_points_checked", checked);
-        scene.report.add("region_mismatches", mismatches, "region() against the order of Eigen's moments");
-        scene.report.add("run_time_region_s", t_region / static_cast<double>(pts.size()), "per point");
-        scene.report.add("run_time_eigen_s", t_eigen / static_cast<double>(pts.size()), "per point, SelfAdjointEigenSolver");
-        scene.report.add("grioli_vs_circular_sections_rad", angle, "largest angle between (5.15) and the circular-section normals");
-        if (mismatches != 0) throw kit::NumericalFailure("region() disagrees with the eigen-solver at " + std::to_string(mismatches) + " points");
+void report(kit::Scene& scene, const BodyAtG& b, const Crossings& err, const RegionCheck& r) {
+    scene.report.headline("max |(5.7) - 1| where the eigen-solver finds B = C (bisection), over the lines",
+                          err.hyperbola, r.t_region);
+    scene.report.add("critical_cos2", rigid::critical_cos2(b), "(5.6)");
+    scene.report.add("h_crit_rel_error", err.hcrit, "(5.8) rewritten, against the bisection");
+    scene.report.add("h_crit_printed_rel_error", err.hcrit_printed, "(5.8) as printed, against the bisection");
+    scene.report.add("region_points_checked", r.checked);
+    scene.report.add("region_mismatches", r.mismatches, "region() against the order of Eigen's moments");
+    scene.report.add("run_time_region_s", r.t_region, "per point");
+    scene.report.add("run_time_eigen_s", r.t_eigen, "per point, SelfAdjointEigenSolver");
+    scene.report.add("grioli_vs_circular_sections_rad", grioli_vs_sections(b),
+                     "largest angle between (5.15) and the circular-section normals");
+    if (r.mismatches != 0)
+        throw kit::NumericalFailure("region() disagrees with the eigen-solver at " + std::to_string(r.mismatches) +
+                                    " points");
+}
 
-        // Figure 5.
-        kit::Figure fig(scene, "regions_plane.svg", 640, 720);
-        if (!fig.enabled()) return;
-        const double k = std::sqrt(dCB / dBA);
-        auto hyp = [&](double x) { return std::sqrt(dCB / b.mu * (1 + b.mu * x * x / dBA)); };
-        std::vector<std::vector<double>> right, left, near_up, near_down, far_up, far_down, branch_up, branch_down, asym1, asym2;
-        const int m = 400;
-        for (int i = 0; i <= m; ++i) {
-            const double x = R * (2.0 * i / m - 1), ax = std::min(k * std::abs(x), R), hx = std::min(hyp(x), R);
-            (x >= 0 ? right : left).push_back({x, -ax, ax});
-            near_up.push_back({x, ax, hx});
-            near_down.push_back({x, -hx, -ax});
-            far_up.push_back({x, hx, R});
-            far_down.push_back({x, -R, -hx});
-            if (hyp(x) <= R) {
-                branch_up.push_back({x, hyp(x)});
-                branch_down.push_back({x, -hyp(x)});
-            }
+using Curve = std::vector<std::vector<double>>;
+
+// Figure 5's regions as filled bands (x, y_lo, y_hi), the hyperbola's branches and the asymptotes.
+struct Regions {
+    Curve right, left, near_up, near_down, far_up, far_down, branch_up, branch_down, asym1, asym2;
+};
+
+Regions regions(const BodyAtG& b, double R) {
+    const double dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g, k = std::sqrt(dCB / dBA);
+    auto hyp = [&](double x) { return std::sqrt(dCB / b.mu * (1 + b.mu * x * x / dBA)); };
+    Regions g;
+    const int m = 400;
+    for (int i = 0; i <= m; ++i) {
+        const double x = R * (2.0 * i / m - 1), ax = std::min(k * std::abs(x), R), hx = std::min(hyp(x), R);
+        (x >= 0 ? g.right : g.left).push_back({x, -ax, ax});
+        g.near_up.push_back({x, ax, hx});
+        g.near_down.push_back({x, -hx, -ax});
+        g.far_up.push_back({x, hx, R});
+        g.far_down.push_back({x, -R, -hx});
+        if (hyp(x) <= R) {
+            g.branch_up.push_back({x, hyp(x)});
+            g.branch_down.push_back({x, -hyp(x)});
         }
-        const double xe = std::min(R, R / k);
-        asym1 = {{-xe, -k * xe}, {xe, k * xe}};
-        asym2 = {{-xe, k * xe}, {xe, -k * xe}};
-        std::string labels;
-        auto label = [&](const std::string& text, double x, double y) {
-            labels += "set label " + kit::quoted(text) + " at " + std::to_string(x) + "," + std::to_string(y) +
-                      " center font ',15' front\n";
-        };
-        const double yv = hyp(0);  // the vertex
-        label("I", 0.8 * R, 0.0);
-        label("II", -0.8 * R, 0.0);
-        label("III", 0.0, 0.5 * std::min(yv, R));
-        label("IV", 0.0, -0.5 * std::min(yv, R));
-        label("V", 0.0, 0.5 * (std::min(yv, R) + R));
-        label("VI", 0.0, -0.5 * (std::min(yv, R) + R));
-        const Vec3 n0 = 0.6 * R * normals[0], n1 = 0.6 * R * normals[1];
-        fig << "set size ratio -1\nset xrange [" + std::to_string(-R) + ":" + std::to_string(R) + "]\nset yrange [" +
-                   std::to_string(-R) + ":" + std::to_string(R) + "]\n"
+    }
+    const double xe = std::min(R, R / k);
+    g.asym1 = {{-xe, -k * xe}, {xe, k * xe}};
+    g.asym2 = {{-xe, k * xe}, {xe, -k * xe}};
+    return g;
+}
+
+// The labels I-VI of the regions, as gnuplot commands.
+std::string region_labels(const BodyAtG& b, double R) {
+    const double yv = std::sqrt((b.C_g - b.B_g) / b.mu);  // the vertex of the hyperbola
+    std::string labels;
+    auto label = [&](const std::string& text, double x, double y) {
+        labels += "set label " + kit::quoted(text) + " at " + std::to_string(x) + "," + std::to_string(y) +
+                  " center font ',15' front\n";
+    };
+    label("I", 0.8 * R, 0.0);
+    label("II", -0.8 * R, 0.0);
+    label("III", 0.0, 0.5 * std::min(yv, R));
+    label("IV", 0.0, -0.5 * std::min(yv, R));
+    label("V", 0.0, 0.5 * (std::min(yv, R) + R));
+    label("VI", 0.0, -0.5 * (std::min(yv, R) + R));
+    return labels;
+}
+
+// Figure 5.
+void draw(kit::Scene& scene, const BodyAtG& b) {
+    kit::Figure fig(scene, "regions_plane.svg", 640, 720);
+    if (!fig.enabled()) return;
+    const double R = plane_radius(b);
+    const Regions g = regions(b, R);
+    const auto normals = rigid::circular_section_normals(Vec3(b.A_g, b.B_g, b.C_g).asDiagonal());
+    const Vec3 n0 = 0.6 * R * normals[0], n1 = 0.6 * R * normals[1];
+    fig << "set size ratio -1\nset xrange [" + std::to_string(-R) + ":" + std::to_string(R) + "]\nset yrange [" +
+               std::to_string(-R) + ":" + std::to_string(R) +
+               "]\n"
                "set xlabel 'x_A (along the smallest axis at G)'\nset ylabel 'x_C (along the largest axis at G)'\n"
                "set key below maxrows 3 box opaque\nset border 15\nunset grid\n"
                "set style fill transparent solid 0.45 noborder\n"
-            << labels
-            << "set arrow from 0,0 to " + std::to_string(n0.x()) + "," + std::to_string(n0.z()) + " lw 2.5 lc rgb '#CC79A7' front\n"
-               "set arrow from 0,0 to " + std::to_string(n1.x()) + "," + std::to_string(n1.z()) + " lw 2.5 lc rgb '#CC79A7' front\n"
+        << region_labels(b, R)
+        << "set arrow from 0,0 to " + std::to_string(n0.x()) + "," + std::to_string(n0.z()) +
+               " lw 2.5 lc rgb '#CC79A7' front\n"
+               "set arrow from 0,0 to " +
+               std::to_string(n1.x()) + "," + std::to_string(n1.z()) +
+               " lw 2.5 lc rgb '#CC79A7' front\n"
                "set label 'G' at 0,0 offset 0.6,-0.6 front\n"
-               "plot '-' using 1:2:3 with filledcurves lc rgb '#56B4E9' title 'I, II: A < B < C at every distance L', "
+               "plot '-' using 1:2:3 with filledcurves lc rgb '#56B4E9' title 'I, II: A < B < C at every distance "
+               "L', "
                "'-' using 1:2:3 with filledcurves lc rgb '#56B4E9' notitle, "
                "'-' using 1:2:3 with filledcurves lc rgb '#009E73' title 'III, IV: A < B < C up to the hyperbola', "
                "'-' using 1:2:3 with filledcurves lc rgb '#009E73' notitle, "
@@ -140,8 +199,23 @@ int main(int argc, char** argv) {
                "'-' with lines ls 7 lw 2.5 title 'hyperbola (5.7): B = C', '-' with lines ls 7 lw 2.5 notitle, "
                "'-' with lines ls 2 lw 2 dt 2 title 'Grioli lines (5.15)', '-' with lines ls 2 lw 2 dt 2 notitle, "
                "NaN with lines lw 2.5 lc rgb '#CC79A7' title 'circular-section normals'\n";
-        fig.data(right).data(left).data(near_up).data(near_down).data(far_up).data(far_down);
-        fig.data(branch_up).data(branch_down).data(asym1).data(asym2);
-        fig.finish();
+    fig.data(g.right).data(g.left).data(g.near_up).data(g.near_down).data(g.far_up).data(g.far_down);
+    fig.data(g.branch_up).data(g.branch_down).data(g.asym1).data(g.asym2);
+    fig.finish();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("regions_plane",
+                      "Chapter 6, Figure 5: regions I-VI of the principal plane, hyperbola (5.7), Grioli lines (5.15)");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        const BodyAtG b = body(p.body);
+        const Crossings err = crossings(b, p.lines);
+        const RegionCheck r = check_regions(b, p.grid);
+        report(scene, b, err, r);
+        draw(scene, b);
     });
 }

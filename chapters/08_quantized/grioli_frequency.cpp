@@ -37,56 +37,68 @@ double off_frequency_deviation(const rigid::Moments& m, double f, double lambda,
     s0.Omega *= lambda;
     const double T = periods * 2 * pi / g.alpha;
     double worst = 0;
-    rigid::integrate_gsl([&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); },
-                         rigid::pack(s0), rigid::linspace(0, T, static_cast<int>(32 * periods)),
-                         [&](double t, const VecX& y) {
-                             const Mat3 exact = rigid::rotation_about(g.b, lambda * g.alpha * t) *
-                                                rigid::rotation_about(g.a, lambda * g.alpha * t);
-                             worst = std::max(worst, rigid::geodesic_angle(rigid::unpack(y).R, exact));
-                         },
-                         {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
+    rigid::integrate_gsl(
+        [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); },
+        rigid::pack(s0), rigid::linspace(0, T, static_cast<int>(32 * periods)),
+        [&](double t, const VecX& y) {
+            const Mat3 exact =
+                rigid::rotation_about(g.b, lambda * g.alpha * t) * rigid::rotation_about(g.a, lambda * g.alpha * t);
+            worst = std::max(worst, rigid::geodesic_angle(rigid::unpack(y).R, exact));
+        },
+        {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
     return worst;
 }
 // end snippet
 
-}  // namespace
+struct Params {
+    ch5::Body body;
+    int grid = 200;
+    int repeats = 3;
+};
 
-int main(int argc, char** argv) {
-    kit::Options opts("grioli_frequency", "Chapter 8: the Grioli frequency, fixed by the body and f, with two senses");
-    opts.real("A", 1.0, "smallest principal moment at O (the body of part (b))", kit::between(1e-6, 1e6))
-        .real("B", 1.5, "intermediate principal moment at O", kit::between(1e-6, 1e6))
-        .real("C", 2.2, "largest principal moment at O (A + B >= C)", kit::between(1e-6, 1e6))
-        .real("f", 1.0, "f = g L mu", kit::between(1e-6, 1e6))
-        .integer("grid", 200, "map resolution: grid points per side", 20, 2000)
-        .integer("repeats", 3, "timing repetitions (the minimum is kept)", 1, 50);
+void declare(kit::Options& opts, Params& p) {
+    ch5::moment_options(opts, p.body)
+        .integer("grid", &p.grid, "map resolution: grid points per side", 20, 2000)
+        .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
+}
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments body = ch5::moments(o);
-        const double f = o.real("f");
-        const int n = static_cast<int>(o.integer("grid"));
-        // The work: the map (grid^2 closed forms) and 15 bodies x 2 senses x 2 periods, `repeats` times.
-        kit::require_budget(o, {double(n) * n * 2e-7 + 60.0 * double(o.integer("repeats")) * 3e-4, 1, "seconds", "--grid, --repeats"});
+// (a) The map of alpha sqrt(C / f) over the admissible bodies (A/C, B/C), NaN outside, a row
+// break after each B/C; its smallest and largest value.
+struct Map {
+    std::vector<std::vector<double>> points;
+    double lowest = 1e300, highest = 0;
+};
 
-        // (a) The map, and bodies across it integrated in both senses over two periods.
-        std::vector<std::vector<double>> map;
-        double lowest = 1e300, highest = 0;
-        for (int j = 0; j <= n; ++j) {
-            for (int i = 0; i <= n; ++i) {
-                const double a = double(i) / n, b = double(j) / n;
-                double value = NAN;
-                if (a > 0 && a < b && b < 1 && 1 - b <= a) {  // the rules of rigid::moments
-                    value = rigid::grioli_alpha(rigid::moments(a, b, 1.0), 1.0);  // alpha sqrt(C / f)
-                    lowest = std::min(lowest, value), highest = std::max(highest, value);
-                }
-                map.push_back({a, b, value});
+Map alpha_map(int n) {
+    Map map;
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) {
+            const double a = double(i) / n, b = double(j) / n;
+            double value = NAN;
+            if (a > 0 && a < b && b < 1 && 1 - b <= a) {                      // the rules of rigid::moments
+                value = rigid::grioli_alpha(rigid::moments(a, b, 1.0), 1.0);  // alpha sqrt(C / f)
+                map.lowest = std::min(map.lowest, value), map.highest = std::max(map.highest, value);
             }
-            map.push_back({});
+            map.points.push_back({a, b, value});
         }
-        std::vector<std::vector<double>> checked;  // A/C, B/C, alpha sqrt(C/f), error ccw, error cw
-        double worst = 0;
-        const double check_time = kit::min_time([&] {
-            checked.clear();
-            worst = 0;
+        map.points.push_back({});
+    }
+    return map;
+}
+
+// Bodies across the map integrated in both senses over two periods. Rows: A/C, B/C,
+// alpha sqrt(C/f), error ccw, error cw.
+struct Checked {
+    std::vector<std::vector<double>> rows;
+    double worst = 0, time;
+};
+
+Checked check_bodies(const rigid::Moments& body, double f, int repeats) {
+    Checked r;
+    r.time = kit::min_time(
+        [&] {
+            r.rows.clear();
+            r.worst = 0;
             for (double a : {0.1, 0.3, 0.5, 0.7, 0.9}) {
                 const double lo = std::max(a, 1 - a);
                 for (double u : {0.25, 0.5, 0.75}) {
@@ -96,89 +108,140 @@ int main(int argc, char** argv) {
                     for (rigid::Sense s : {rigid::Sense::ccw, rigid::Sense::cw}) {
                         const rigid::GrioliPrecession g = rigid::grioli_precession(m, f, s);
                         const rigid::PrecessionCheck c = rigid::integrate_grioli(
-                            m, g, 2.0, 16, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
+                            m, g, 2.0, 16,
+                            {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
                         row.push_back(c.max_rotation_error);
-                        worst = std::max(worst, c.max_rotation_error);
+                        r.worst = std::max(r.worst, c.max_rotation_error);
                     }
-                    checked.push_back(row);
+                    r.rows.push_back(row);
                 }
             }
-        }, static_cast<int>(o.integer("repeats")));
-        if (!std::isfinite(worst)) throw kit::NumericalFailure("an integration produced a non-finite rotation");
-        scene.report.headline("max geodesic angle between the integrated R(t) and R^b(sigma alpha t) R^a(sigma alpha t), "
-                              "15 bodies across the map, both senses, two periods, rk8pd at tol 1e-12",
-                              worst, check_time);
-        scene.report.add("alpha", rigid::grioli_alpha(body, f), "the Chapter 5 body, [P, (int.4)]");
-        scene.report.add("alpha_map_min", lowest, "alpha sqrt(C/f) over the admissible bodies (grid)");
-        scene.report.add("alpha_map_max", highest, "the same, largest on the grid (unbounded near A = 0, B = C)");
-        scene.report.table("checked_bodies", {"A_over_C", "B_over_C", "alpha_sqrt_C_over_f", "error_ccw", "error_cw"}, checked);
+        },
+        repeats);
+    if (!std::isfinite(r.worst)) throw kit::NumericalFailure("an integration produced a non-finite rotation");
+    return r;
+}
 
-        // (b) Scaling the initial angular velocity by lambda.
-        std::vector<std::vector<double>> sweep;
-        for (int i = -160; i <= 160; i += 2) {
-            const double lambda = i / 100.0;
-            if (std::abs(lambda) < 0.3) continue;
-            sweep.push_back({lambda, off_frequency_deviation(body, f, lambda, 2.0)});
-        }
-        std::vector<std::vector<double>> near;  // lambda - 1, deviation
-        for (int e = 1; e <= 8; ++e) {
-            const double d = std::pow(10.0, -e);
-            near.push_back({d, off_frequency_deviation(body, f, 1 + d, 2.0)});
-        }
-        double at_plus = 0, at_minus = 0, elsewhere = 1e300;
-        for (const auto& r : sweep) {
-            if (r[0] == 1) at_plus = r[1];
-            else if (r[0] == -1) at_minus = r[1];
-            else if (std::abs(std::abs(r[0]) - 1) >= 0.05) elsewhere = std::min(elsewhere, r[1]);
-        }
-        scene.report.add("deviation_lambda_plus_1", at_plus, "radians: the ccw precession of Theorem 1");
-        scene.report.add("deviation_lambda_minus_1", at_minus, "radians: the cw precession");
-        scene.report.add("deviation_elsewhere_min", elsewhere, "radians: smallest over |lambda| >= 0.3, ||lambda| - 1| >= 0.05");
-        scene.report.add("deviation_per_lambda_error", near[4][1] / near[4][0],
-                         "deviation / (lambda - 1) at lambda - 1 = 1e-5 (two periods)");
-        scene.report.table("near_lambda_1", {"lambda_minus_1", "deviation"}, near);
+void report_map(kit::Scene& scene, const rigid::Moments& body, double f, const Map& map, const Checked& checked) {
+    scene.report.headline(
+        "max geodesic angle between the integrated R(t) and R^b(sigma alpha t) R^a(sigma alpha t), "
+        "15 bodies across the map, both senses, two periods, rk8pd at tol 1e-12",
+        checked.worst, checked.time);
+    scene.report.add("alpha", rigid::grioli_alpha(body, f), "the Chapter 5 body, [P, (int.4)]");
+    scene.report.add("alpha_map_min", map.lowest, "alpha sqrt(C/f) over the admissible bodies (grid)");
+    scene.report.add("alpha_map_max", map.highest, "the same, largest on the grid (unbounded near A = 0, B = C)");
+    scene.report.table("checked_bodies", {"A_over_C", "B_over_C", "alpha_sqrt_C_over_f", "error_ccw", "error_cw"},
+                       checked.rows);
+}
 
-        kit::Figure fig(scene, "grioli_alpha_map.svg", 760, 520);
-        if (fig.enabled()) {
-            fig << "set title 'The Grioli frequency α\u00a0(C/f)^{1/2}\u00a0= (S/C)^{-1/2}\u00a0over the admissible bodies'\n"
-                   "set xlabel 'A / C'\nset ylabel 'B / C'\nset xrange [0:1]\nset yrange [0.45:1.02]\nset size ratio -1\n"
-                   "set cbrange [1:2.2]\nset cblabel 'α\u00a0(C/f)^{1/2}'\n"
-                   "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21908d', 3 '#5dc963', 4 '#fde725')\n"
-                   "set key at graph 0.98, graph 0.12 right bottom font ',9' opaque box\n"
-                   "set label 'A + B = C (flat)' at 0.12, 0.72 rotate by -45 font ',10'\n"
-                   "set label 'A = B' at 0.8, 0.76 rotate by 45 font ',10'\n"
-                   "set label 'B = C' at 0.55, 1.01 font ',10'\n"
-                   "plot '-' with image pixels notitle, '-' with lines lc rgb 'black' lw 1.5 notitle, "
-                   "'-' with points pt 6 ps 1.2 lc rgb 'black' title 'integrated in both senses', "
-                   "'-' with points pt 7 ps 1.8 lc rgb '#d55e00' title 'the body of part (b)'\n";
-            std::vector<std::vector<double>> pts;
-            for (const auto& r : checked) pts.push_back({r[0], r[1]});
-            fig.data(map).data({{0, 1}, {0.5, 0.5}, {1, 1}, {0, 1}}).data(pts).data({{body.A / body.C, body.B / body.C}});
-            fig.finish();
-        }
+// (b) Scaling the initial angular velocity by lambda: the deviation over |lambda| in [0.3, 1.6]
+// (rows lambda, deviation) and near lambda = 1 (rows lambda - 1, deviation).
+struct Scaling {
+    std::vector<std::vector<double>> sweep, near;
+};
 
-        kit::Figure fl(scene, "grioli_two_senses.svg", 820, 480);
-        if (fl.enabled()) {
-            char head[200];
-            std::snprintf(head, sizeof head,
-                          "set title 'Ω(0) scaled by λ: distance from R^b(λαt)\u00a0R^a(λαt), "
-                          "two periods, body (%g, %g, %g)'\n",
-                          body.A, body.B, body.C);
-            fl << std::string(head) +
-                      "set xlabel 'λ'\nset ylabel 'max geodesic angle (rad)'\nset logscale y\nset format y '10^{%L}'\n"
-                      "set yrange [1e-15:10]\nset xrange [-1.65:1.65]\nset key bottom center font ',9'\n"
-                      "set arrow from -1, graph 0 to -1, graph 1 nohead dt 3 lc rgb '#999999'\n"
-                      "set arrow from 1, graph 0 to 1, graph 1 nohead dt 3 lc rgb '#999999'\n"
-                      "set label 'clockwise' at -1.05, 1e-14 right font ',10'\nset label 'counter-clockwise' at 1.05, 1e-14 font ',10'\n"
-                      "unset key\nplot '-' with linespoints ls 1 pt 7 ps 0.5 notitle\n";
-            std::vector<std::vector<double>> both;  // the two branches, with a break (an empty row)
-            for (const auto& r : sweep)
-                if (r[0] < 0) both.push_back({r[0], std::max(r[1], 1e-16)});
-            both.push_back({});
-            for (const auto& r : sweep)
-                if (r[0] > 0) both.push_back({r[0], std::max(r[1], 1e-16)});
-            fl.data(both);
-            fl.finish();
-        }
+Scaling scaling(const rigid::Moments& body, double f) {
+    Scaling s;
+    for (int i = -160; i <= 160; i += 2) {
+        const double lambda = i / 100.0;
+        if (std::abs(lambda) < 0.3) continue;
+        s.sweep.push_back({lambda, off_frequency_deviation(body, f, lambda, 2.0)});
+    }
+    for (int e = 1; e <= 8; ++e) {
+        const double d = std::pow(10.0, -e);
+        s.near.push_back({d, off_frequency_deviation(body, f, 1 + d, 2.0)});
+    }
+    return s;
+}
+
+void report_scaling(kit::Scene& scene, const Scaling& s) {
+    double at_plus = 0, at_minus = 0, elsewhere = 1e300;
+    for (const auto& r : s.sweep) {
+        if (r[0] == 1)
+            at_plus = r[1];
+        else if (r[0] == -1)
+            at_minus = r[1];
+        else if (std::abs(std::abs(r[0]) - 1) >= 0.05)
+            elsewhere = std::min(elsewhere, r[1]);
+    }
+    scene.report.add("deviation_lambda_plus_1", at_plus, "radians: the ccw precession of Theorem 1");
+    scene.report.add("deviation_lambda_minus_1", at_minus, "radians: the cw precession");
+    scene.report.add("deviation_elsewhere_min", elsewhere,
+                     "radians: smallest over |lambda| >= 0.3, ||lambda| - 1| >= 0.05");
+    scene.report.add("deviation_per_lambda_error", s.near[4][1] / s.near[4][0],
+                     "deviation / (lambda - 1) at lambda - 1 = 1e-5 (two periods)");
+    scene.report.table("near_lambda_1", {"lambda_minus_1", "deviation"}, s.near);
+}
+
+void draw_map(kit::Scene& scene, const rigid::Moments& body, const Map& map, const Checked& checked) {
+    kit::Figure fig(scene, "grioli_alpha_map.svg", 760, 520);
+    if (!fig.enabled()) return;
+    fig << "set title 'The Grioli frequency α\u00a0(C/f)^{1/2}\u00a0= (S/C)^{-1/2}\u00a0over the admissible "
+           "bodies'\n"
+           "set xlabel 'A / C'\nset ylabel 'B / C'\nset xrange [0:1]\nset yrange [0.45:1.02]\nset size ratio "
+           "-1\n"
+           "set cbrange [1:2.2]\nset cblabel 'α\u00a0(C/f)^{1/2}'\n"
+           "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21908d', 3 '#5dc963', 4 '#fde725')\n"
+           "set key at graph 0.98, graph 0.12 right bottom font ',9' opaque box\n"
+           "set label 'A + B = C (flat)' at 0.12, 0.72 rotate by -45 font ',10'\n"
+           "set label 'A = B' at 0.8, 0.76 rotate by 45 font ',10'\n"
+           "set label 'B = C' at 0.55, 1.01 font ',10'\n"
+           "plot '-' with image pixels notitle, '-' with lines lc rgb 'black' lw 1.5 notitle, "
+           "'-' with points pt 6 ps 1.2 lc rgb 'black' title 'integrated in both senses', "
+           "'-' with points pt 7 ps 1.8 lc rgb '#d55e00' title 'the body of part (b)'\n";
+    std::vector<std::vector<double>> pts;
+    for (const auto& r : checked.rows) pts.push_back({r[0], r[1]});
+    fig.data(map.points)
+        .data({{0, 1}, {0.5, 0.5}, {1, 1}, {0, 1}})
+        .data(pts)
+        .data({{body.A / body.C, body.B / body.C}});
+    fig.finish();
+}
+
+void draw_senses(kit::Scene& scene, const rigid::Moments& body, const Scaling& s) {
+    kit::Figure fl(scene, "grioli_two_senses.svg", 820, 480);
+    if (!fl.enabled()) return;
+    char head[200];
+    std::snprintf(head, sizeof head,
+                  "set title 'Ω(0) scaled by λ: distance from R^b(λαt)\u00a0R^a(λαt), "
+                  "two periods, body (%g, %g, %g)'\n",
+                  body.A, body.B, body.C);
+    fl << std::string(head) +
+              "set xlabel 'λ'\nset ylabel 'max geodesic angle (rad)'\nset logscale y\nset format y '10^{%L}'\n"
+              "set yrange [1e-15:10]\nset xrange [-1.65:1.65]\nset key bottom center font ',9'\n"
+              "set arrow from -1, graph 0 to -1, graph 1 nohead dt 3 lc rgb '#999999'\n"
+              "set arrow from 1, graph 0 to 1, graph 1 nohead dt 3 lc rgb '#999999'\n"
+              "set label 'clockwise' at -1.05, 1e-14 right font ',10'\nset label 'counter-clockwise' at 1.05, "
+              "1e-14 font ',10'\n"
+              "unset key\nplot '-' with linespoints ls 1 pt 7 ps 0.5 notitle\n";
+    std::vector<std::vector<double>> both;  // the two branches, with a break (an empty row)
+    for (const auto& r : s.sweep)
+        if (r[0] < 0) both.push_back({r[0], std::max(r[1], 1e-16)});
+    both.push_back({});
+    for (const auto& r : s.sweep)
+        if (r[0] > 0) both.push_back({r[0], std::max(r[1], 1e-16)});
+    fl.data(both);
+    fl.finish();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Params p;
+    kit::Options opts("grioli_frequency", "Chapter 8: the Grioli frequency, fixed by the body and f, with two senses");
+    declare(opts, p);
+    return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
+        const rigid::Moments body = ch5::moments(p.body.moments);
+        const double f = p.body.f;
+        // The work: the map (grid^2 closed forms) and 15 bodies x 2 senses x 2 periods, `repeats` times.
+        kit::require_budget(
+            o, {double(p.grid) * p.grid * 2e-7 + 60.0 * double(p.repeats) * 3e-4, 1, "seconds", "--grid, --repeats"});
+        const Map map = alpha_map(p.grid);
+        const Checked checked = check_bodies(body, f, p.repeats);
+        report_map(scene, body, f, map, checked);
+        const Scaling s = scaling(body, f);
+        report_scaling(scene, s);
+        draw_map(scene, body, map, checked);
+        draw_senses(scene, body, s);
     });
 }

@@ -21,12 +21,13 @@ namespace {
 
 // The scene's own parameters, bound to its options (the oscillator's are scene8's).
 struct Params {
+    scene8::OscillatorParams osc;
     double T = 200;
     long outputs = 800, repeats = 3;
 };
 
 void declare(kit::Options& opts, Params& p) {
-    scene8::oscillator_options(opts, 0.5, 2.0);
+    scene8::oscillator_options(opts, p.osc);
     opts.real("T", &p.T, "time span", kit::between(1e-2, 1e6))
         .integer("outputs", &p.outputs, "output times", 10, 100000)
         .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
@@ -41,15 +42,19 @@ struct Setup {
 };
 
 Setup setup(const kit::Options& o, const Params& p) {
-    Setup u{scene8::oscillator_from(o), scene8::friction_from(o), p.T, 0, static_cast<int>(p.repeats),
+    Setup u{scene8::oscillator_from(p.osc),
+            scene8::friction_from(p.osc),
+            p.T,
+            0,
+            static_cast<int>(p.repeats),
             rigid::linspace(0, p.T, static_cast<int>(p.outputs))};
     u.w = u.osc.omega / std::sqrt(u.osc.m);
     // The work: the motion on a level and six between levels (`repeats` timed runs each), six
     // averaged ones, over T; and 50 periods for the period. The phase turned sets the steps.
     kit::require_budget(o, {(7.0 * u.repeats + 6) * u.T * u.w + 50 * 2 * std::numbers::pi, scene8::seconds_per_radian,
                             "radians of phase", "--T, --omega, --m, --repeats"});
-    kit::require_budget(o, {(7.0 * u.repeats + 6) * double(u.times.size()), 4e-6, "output times (all runs)",
-                            "--outputs, --repeats"});
+    kit::require_budget(
+        o, {(7.0 * u.repeats + 6) * double(u.times.size()), 4e-6, "output times (all runs)", "--outputs, --repeats"});
     return u;
 }
 
@@ -75,28 +80,31 @@ void report_on_level(kit::Report& report, const Setup& u) {
         naive_err = std::max(naive_err, std::abs(on.y[i](0) - q0 * std::cos(osc.omega * t)) / q0);
         on_drift = std::max(on_drift, std::abs(rigid::oscillator_energy(osc, on.y[i](0), on.y[i](1)) - E_on) / E_on);
     }
-    report.headline("a motion started on the level E = 2 E0, rk8pd at tol 1e-12, against the exact harmonic "
-                          "motion q0 cos(omega t / sqrt(m)): max relative error of q and q'",
-                          on_err, on_time);
+    report.headline(
+        "a motion started on the level E = 2 E0, rk8pd at tol 1e-12, against the exact harmonic "
+        "motion q0 cos(omega t / sqrt(m)): max relative error of q and q'",
+        on_err, on_time);
     report.add("on_level_energy_drift", on_drift, "max |E(t) - 2 E0| / (2 E0) on the level");
     report.add("error_if_frequency_were_omega", naive_err, "the same motion against q0 cos(omega t)");
 
-// The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
+    // The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
     const auto fine = rigid::linspace(0, 50 * 2 * std::numbers::pi / w, 20000);
     std::vector<double> crossings;
     double tp = 0, qp = y_on(0);
-    rigid::integrate_gsl(f, y_on, fine, [&](double t, const VecX& y) {
-        if (t > 0 && (qp < 0) != (y(0) < 0)) crossings.push_back(tp + (t - tp) * qp / (qp - y(0)));
-        tp = t, qp = y(0);
-    }, tight);
+    rigid::integrate_gsl(
+        f, y_on, fine,
+        [&](double t, const VecX& y) {
+            if (t > 0 && (qp < 0) != (y(0) < 0)) crossings.push_back(tp + (t - tp) * qp / (qp - y(0)));
+            tp = t, qp = y(0);
+        },
+        tight);
     if (crossings.size() < 3) throw kit::NumericalFailure("too few zero crossings to measure the period");
     const double period = 2 * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
     report.add("period_measured", period, "from the zero crossings of q on the level");
-    report.add("period_predicted", 2 * std::numbers::pi * std::sqrt(osc.m) / osc.omega,
-                     "2 pi sqrt(m) / omega");
+    report.add("period_predicted", 2 * std::numbers::pi * std::sqrt(osc.m) / osc.omega, "2 pi sqrt(m) / omega");
     report.add("period_if_frequency_were_omega", 2 * std::numbers::pi / osc.omega);
     report.add("period_mismatch", std::abs(period * osc.omega / (2 * std::numbers::pi * std::sqrt(osc.m)) - 1),
-                     "relative, measured against 2 pi sqrt(m) / omega");
+               "relative, measured against 2 pi sqrt(m) / omega");
 }
 
 // 2. Motions started between the levels, with the work of friction alongside.
@@ -122,15 +130,17 @@ Settling settle(const Setup& u) {
         const double E_start = s * E0, level = rigid::level_below(k, E_start);
         const VecX y0{{scene8::at_energy(osc, E_start)(0), 0.0, 0.0}};
         scene8::Run run;
-        settle_time += kit::min_time([&] { run = scene8::integrate(scene8::with_work(osc, k), y0, times, "rk8pd", 1e-12); },
-                                     repeats);
-        const scene8::Run avg = scene8::integrate(scene8::averaged_energy(osc, k), VecX{{E_start}}, times, "rk8pd", 1e-12);
+        settle_time += kit::min_time(
+            [&] { run = scene8::integrate(scene8::with_work(osc, k), y0, times, "rk8pd", 1e-12); }, repeats);
+        const scene8::Run avg =
+            scene8::integrate(scene8::averaged_energy(osc, k), VecX{{E_start}}, times, "rk8pd", 1e-12);
         std::vector<std::vector<double>> c, a, d, as;
         double min_above = 1e300;
         const double rate = scene8::level_rate(osc, k, level);
         for (std::size_t i = 0; i < times.size(); ++i) {
             const double E = rigid::oscillator_energy(osc, run.y[i](0), run.y[i](1));
-            if (!std::isfinite(E)) throw kit::NumericalFailure("the energy is not finite at t = " + std::to_string(times[i]));
+            if (!std::isfinite(E))
+                throw kit::NumericalFailure("the energy is not finite at t = " + std::to_string(times[i]));
             balance = std::max(balance, std::abs(E + run.y[i](2) - E_start) / E_start);
             min_above = std::min(min_above, E - level);
             c.push_back({times[i], E / E0});
@@ -139,10 +149,11 @@ Settling settle(const Setup& u) {
                 d.push_back({times[i], std::max(E - level, 1e-300) / E0});
                 // The asymptote of the averaged equation: (p - 1) c t for p > 1 (E_n > 0), or,
                 // on the ground level, E^-p = p kappa (pi/E0)^p t / m.
-                const double x = level > 0
-                                     ? std::pow((k.power - 1) * rate * times[i], -1 / (k.power - 1))
-                                     : std::pow(k.power * k.kappa * std::pow(std::numbers::pi / E0, k.power) * times[i] / osc.m,
-                                                -1 / k.power);
+                const double x =
+                    level > 0
+                        ? std::pow((k.power - 1) * rate * times[i], -1 / (k.power - 1))
+                        : std::pow(k.power * k.kappa * std::pow(std::numbers::pi / E0, k.power) * times[i] / osc.m,
+                                   -1 / k.power);
                 if (k.power > 1 || level == 0) as.push_back({times[i], x / E0});
             }
         }
@@ -162,19 +173,18 @@ void report_settling(kit::Report& report, const Setup& u, const Settling& S) {
     report.add("T", T);
     report.add("natural_frequency", w, "omega / sqrt(m)");
     report.table("settling",
-                       {"E_start_over_E0", "level_over_E0", "E_T_over_E0", "above_level_T", "averaged_above_level_T",
-                        "ratio", "min_above_level"},
-                       rows);
+                 {"E_start_over_E0", "level_over_E0", "E_T_over_E0", "above_level_T", "averaged_above_level_T", "ratio",
+                  "min_above_level"},
+                 rows);
     double worst_ratio = 0, lowest = 1e300;
     for (const auto& r : rows) {
         if (r[1] > 0) worst_ratio = std::max(worst_ratio, std::abs(r[5] - 1));
         lowest = std::min(lowest, r[6]);
     }
     report.add("averaged_mismatch_at_T", worst_ratio,
-                     "max |(E(T) - E_n) / (averaged E(T) - E_n) - 1| over the motions that settle on E_n > 0");
+               "max |(E(T) - E_n) / (averaged E(T) - E_n) - 1| over the motions that settle on E_n > 0");
     report.add("min_above_level", lowest, "min over t of E(t) - level: never below the level it settles onto");
     if (lowest < 0) report.note("a motion went below the level it should settle onto");
-
 }
 
 void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
@@ -186,11 +196,13 @@ void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
     kit::Figure fig(scene, "level_settling.svg", 820, 520);
     if (fig.enabled()) {
         char head[160];
-        std::snprintf(head, sizeof head, "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
+        std::snprintf(head, sizeof head,
+                      "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
                       k.kappa, k.power);
         std::string cmd = std::string(head) + "set xrange [0:" + std::to_string(std::min(T, 40.0)) +
                           "]\nset xlabel 't'\nset ylabel 'E / E_{0}'\nset key outside right top font ',9'\n"
-                          "set yrange [0:" + std::to_string(levels + 0.2) + "]\n";
+                          "set yrange [0:" +
+                          std::to_string(levels + 0.2) + "]\n";
         for (int n = 0; n <= levels; ++n)
             cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
                    " nohead dt 3 lc rgb '#999999'\n";
@@ -207,7 +219,6 @@ void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
         for (const auto& a : averaged) fig.data(a);
         fig.finish();
     }
-
 }
 
 void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
@@ -217,13 +228,17 @@ void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
     const auto &approach = S.approach, &asymptote = S.asymptote;
     kit::Figure fa(scene, "level_approach.svg", 820, 520);
     if (fa.enabled()) {
-        std::string cmd = "set title 'Approach to the levels: E(t) - E_{n}\u00a0(solid), the averaged asymptote (dashed)'\n"
-                          "set xrange [1:" + std::to_string(T) + "]\nset logscale xy\nset format y '10^{%L}'\nset xlabel 't'\nset ylabel '(E - E_{n}) / E_{0}'\n"
-                          "set key outside right top font ',9'\nplot ";
+        std::string cmd =
+            "set title 'Approach to the levels: E(t) - E_{n}\u00a0(solid), the averaged asymptote (dashed)'\n"
+            "set xrange [1:" +
+            std::to_string(T) +
+            "]\nset logscale xy\nset format y '10^{%L}'\nset xlabel 't'\nset ylabel '(E - E_{n}) / E_{0}'\n"
+            "set key outside right top font ',9'\nplot ";
         for (std::size_t j = 0; j < starts.size(); ++j) {
             char title[64];
             std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}\u00a0settles on %g E_{0}", starts[j], rows[j][1]);
-            cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "'";
+            cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title +
+                   "'";
         }
         for (std::size_t j = 0; j < starts.size(); ++j)
             if (!asymptote[j].empty()) cmd += ", '-' with lines ls " + std::to_string(j + 1) + " dt 2 lw 1 notitle";

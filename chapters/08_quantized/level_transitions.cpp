@@ -27,24 +27,28 @@ double first_time_below(const rigid::Oscillator& osc, const rigid::LevelFriction
                         const std::vector<double>& times, double below, double tol = 1e-13) {
     const VecX y0{{scene8::at_energy(osc, E_start)(0), 0.0}};
     double found = NAN, tp = 0, Ep = E_start;
-    rigid::integrate_gsl(rigid::oscillator_equations(osc, k), y0, times, [&](double t, const VecX& y) {
-        const double E = rigid::oscillator_energy(osc, y(0), y(1));
-        if (std::isnan(found) && E < below) found = tp + (t - tp) * (Ep - below) / (Ep - E);
-        tp = t, Ep = E;
-    }, {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+    rigid::integrate_gsl(rigid::oscillator_equations(osc, k), y0, times,
+                         [&](double t, const VecX& y) {
+                             const double E = rigid::oscillator_energy(osc, y(0), y(1));
+                             if (std::isnan(found) && E < below) found = tp + (t - tp) * (Ep - below) / (Ep - E);
+                             tp = t, Ep = E;
+                         },
+                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
     return found;
 }
 
 // The scene's own parameters, bound to its options (the oscillator's are scene8's).
 struct Params {
+    scene8::OscillatorParams osc;
     long start_level = 4, seeds = 3, repeats = 1;
     double epsilon = 3e-3, tau = 1.0, T = 600;
 };
 
 void declare(kit::Options& opts, Params& p) {
-    scene8::oscillator_options(opts, 0.5, 2.0);
+    scene8::oscillator_options(opts, p.osc);
     opts.integer("start_level", &p.start_level, "the level n the kicked motions start on, E = n E0", 1, 50)
-        .real("epsilon", &p.epsilon, "the size of a kick: q' += epsilon * (a normal random number)", kit::between(1e-9, 1))
+        .real("epsilon", &p.epsilon, "the size of a kick: q' += epsilon * (a normal random number)",
+              kit::between(1e-9, 1))
         .real("tau", &p.tau, "the time between kicks", kit::between(1e-2, 1e3))
         .real("T", &p.T, "time span of the kicked motions", kit::between(1e-2, 1e6))
         .integer("seeds", &p.seeds, "kicked motions (seeds 1, 2, ...)", 1, 20)
@@ -60,11 +64,12 @@ struct Setup {
 };
 
 Setup setup(const kit::Options& o, const Params& prm) {
-    const rigid::Oscillator osc = scene8::oscillator_from(o);
-    const rigid::LevelFriction k = scene8::friction_from(o);
+    const rigid::Oscillator osc = scene8::oscillator_from(prm.osc);
+    const rigid::LevelFriction k = scene8::friction_from(prm.osc);
     const double E0 = k.E0, tau = prm.tau, T = prm.T;
     const int n_start = static_cast<int>(prm.start_level), seeds = static_cast<int>(prm.seeds);
-    if (tau > T) throw kit::BadInput("--tau must be at most --T (got " + std::to_string(tau) + " > " + std::to_string(T) + ")");
+    if (tau > T)
+        throw kit::BadInput("--tau must be at most --T (got " + std::to_string(tau) + " > " + std::to_string(T) + ")");
     // The work: seeds + 1 motions over T (`repeats` timed runs), restarted at every kick.
     const double w = osc.omega / std::sqrt(osc.m);
     kit::require_budget(o, {double(prm.repeats) * (seeds + 1) * (T * w + 20 * T / tau), scene8::seconds_per_radian,
@@ -79,8 +84,8 @@ Setup setup(const kit::Options& o, const Params& prm) {
         for (int e = 1; e <= (p == 1 ? 10 : 5); ++e)
             escape_span += 1.5 * scene8::averaged_escape_time(osc, kp, 2 * E0, std::pow(10.0, -e) * E0) + 30;
     }
-    kit::require_budget(o, {escape_span * w + 400 * w, scene8::seconds_per_radian, "radians of phase (the escapes of part (b))",
-                            "--power, --kappa, --E0, --omega, --m"});
+    kit::require_budget(o, {escape_span * w + 400 * w, scene8::seconds_per_radian,
+                            "radians of phase (the escapes of part (b))", "--power, --kappa, --E0, --omega, --m"});
     return {osc, k, prm.epsilon, tau, T, n_start, seeds, n_start * E0, 2 * E0};
 }
 
@@ -114,14 +119,17 @@ Kicked kicked_motions(const Setup& u) {
             int next = n_start;
             while (t < T - 1e-12) {
                 const double t1 = std::min(T, t + tau);
-                rigid::integrate_gsl(g, y, rigid::linspace(t, t1, per_kick), [&](double tt, const VecX& z) {
-                    if (tt == t) return;
-                    const double E = rigid::oscillator_energy(osc, z(0), z(1));
-                    tr.curve.push_back({tt, E / E0});
-                    tr.balance = std::max(tr.balance, std::abs(E + z(2) - kicked_in - E_start) / E_start);
-                    while (next >= 1 && E < (next - 0.5) * E0) tr.leave.push_back(tt), --next;
-                    y = z;
-                }, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
+                rigid::integrate_gsl(g, y, rigid::linspace(t, t1, per_kick),
+                                     [&](double tt, const VecX& z) {
+                                         if (tt == t) return;
+                                         const double E = rigid::oscillator_energy(osc, z(0), z(1));
+                                         tr.curve.push_back({tt, E / E0});
+                                         tr.balance =
+                                             std::max(tr.balance, std::abs(E + z(2) - kicked_in - E_start) / E_start);
+                                         while (next >= 1 && E < (next - 0.5) * E0) tr.leave.push_back(tt), --next;
+                                         y = z;
+                                     },
+                                     {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
                 t = t1;
                 if (s > 0 && t < T) {  // seed 0: left alone
                     const double before = rigid::oscillator_energy(osc, y(0), y(1));
@@ -140,9 +148,10 @@ void report_kicked(kit::Report& report, const Setup& u, const Kicked& kd) {
     const int n_start = u.n_start, seeds = u.seeds;
     double balance = 0;
     for (const auto& tr : traces) balance = std::max(balance, tr.balance);
-    report.headline("max |E + W - (energy put in by the kicks) - E(0)| / E(0) over the kicked and the "
-                          "undisturbed motions, rk8pd at tol 1e-12",
-                          balance, kd.time_s);
+    report.headline(
+        "max |E + W - (energy put in by the kicks) - E(0)| / E(0) over the kicked and the "
+        "undisturbed motions, rk8pd at tol 1e-12",
+        balance, kd.time_s);
     std::vector<std::vector<double>> leave_rows;
     for (int s = 0; s <= seeds; ++s)
         for (std::size_t j = 0; j < traces[s].leave.size(); ++j)
@@ -168,7 +177,6 @@ void report_kicked(kit::Report& report, const Setup& u, const Kicked& kd) {
     }
     report.add("plateaus", plateaus, "plateaus between two drops, over the kicked motions");
     report.add("plateau_offset", worst_plateau, "max |E / E0 - n| half-way through a plateau");
-
 }
 
 // (b) One disturbance delta below E_n, n = 2: the time to fall below E_n - E0 / 2.
@@ -191,9 +199,11 @@ Escapes escapes(const Setup& u) {
         for (int e = 1; e <= (p == 1 ? 10 : 5); ++e) {
             const double delta = std::pow(10.0, -e) * E0;
             const double predicted = scene8::averaged_escape_time(osc, kp, E_n, delta);
-            const auto times = rigid::linspace(0, 1.5 * predicted + 30, static_cast<int>(std::ceil((1.5 * predicted + 30) / 0.05)));
+            const auto times =
+                rigid::linspace(0, 1.5 * predicted + 30, static_cast<int>(std::ceil((1.5 * predicted + 30) / 0.05)));
             const double measured = first_time_below(osc, kp, E_n - delta, times, E_n - E0 / 2);
-            if (std::isnan(measured)) throw kit::NumericalFailure("the motion did not leave the level in the time allowed");
+            if (std::isnan(measured))
+                throw kit::NumericalFailure("the motion did not leave the level in the time allowed");
             escape.push_back({p, delta / E0, measured, predicted});
         }
     }
@@ -220,19 +230,19 @@ void report_escapes(kit::Report& report, const Setup& u, const Escapes& es) {
         std::vector<double> x, y;  // ln(1 / delta), t
         double last_delta = 0, last_t = 0;
         for (const auto& r : escape)
-            if (r[0] == p) x.push_back(std::log(E0 / (r[1] * E0))), y.push_back(r[2]), last_delta = r[1] * E0, last_t = r[2];
+            if (r[0] == p)
+                x.push_back(std::log(E0 / (r[1] * E0))), y.push_back(r[2]), last_delta = r[1] * E0, last_t = r[2];
         if (p > 1) {
             report.add("smooth_escape_law", last_t * (p - 1) * c * std::pow(last_delta, p - 1),
-                             "p > 1: measured time x (p-1) c delta^(p-1) at the smallest delta (the law: 1)");
+                       "p > 1: measured time x (p-1) c delta^(p-1) at the smallest delta (the law: 1)");
         } else {
             const double n = double(x.size());
             double sx = 0, sy = 0, sxx = 0, sxy = 0;
             for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
             report.add("kinked_escape_law", c * (n * sxy - sx * sy) / (n * sxx - sx * sx),
-                             "p = 1: c x d(time)/d ln(1/delta), least squares (the law: 1)");
+                       "p = 1: c x d(time)/d ln(1/delta), least squares (the law: 1)");
         }
     }
-
 }
 
 // (c) p = 1 with no disturbance but the computation's own errors: started on E = 2 E0 (to
@@ -254,11 +264,10 @@ void report_undisturbed_exit(kit::Report& report, const Setup& u) {
     }
     report.table("undisturbed_exit", {"tol", "time_below_1_5_E0"}, left_rows);
     report.add("kinked_left_undisturbed_at", left_rows[3][1],
-                     "p = 1, started on E = 2 E0, no disturbance, rk8pd at 1e-13: time below 1.5 E0 (null: never, t <= 400)");
+               "p = 1, started on E = 2 E0, no disturbance, rk8pd at 1e-13: time below 1.5 E0 (null: never, t <= 400)");
     report.add("kinked_left_undisturbed_earliest", earliest, "the same, earliest over tolerances 1e-10 ... 1e-14");
     report.add("kinked_left_undisturbed_latest", latest, "the same, latest over tolerances 1e-10 ... 1e-14");
 }
-
 
 void draw_kicks(kit::Scene& scene, const Setup& u, const Kicked& kd) {
     const double eps = u.eps, tau = u.tau;
@@ -268,10 +277,13 @@ void draw_kicks(kit::Scene& scene, const Setup& u, const Kicked& kd) {
     if (fig.enabled()) {
         char head[200];
         std::snprintf(head, sizeof head,
-                      "set title 'Kicks q'' += %g N(0,1) every %g, starting on E = %d E_{0}: energy against time'\n", eps,
-                      tau, n_start);
-        std::string cmd = std::string(head) + "set xlabel 't'\nset ylabel 'E / E_{0}'\nset key at graph 0.98, graph 0.8 right top font ',9' box opaque\n"
-                          "set yrange [0:" + std::to_string(n_start + 0.4) + "]\n";
+                      "set title 'Kicks q'' += %g N(0,1) every %g, starting on E = %d E_{0}: energy against time'\n",
+                      eps, tau, n_start);
+        std::string cmd =
+            std::string(head) +
+            "set xlabel 't'\nset ylabel 'E / E_{0}'\nset key at graph 0.98, graph 0.8 right top font ',9' box opaque\n"
+            "set yrange [0:" +
+            std::to_string(n_start + 0.4) + "]\n";
         for (int n = 0; n <= n_start; ++n)
             cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
                    " nohead dt 3 lc rgb '#999999'\n";
@@ -282,7 +294,6 @@ void draw_kicks(kit::Scene& scene, const Setup& u, const Kicked& kd) {
         for (int s = 0; s <= seeds; ++s) fig.data(traces[s].curve);
         fig.finish();
     }
-
 }
 
 void draw_escapes(kit::Scene& scene, const Escapes& es) {
@@ -298,8 +309,8 @@ void draw_escapes(kit::Scene& scene, const Escapes& es) {
             char t1[80], t2[80];
             std::snprintf(t1, sizeof t1, "p = %g, (6.1) integrated", powers[j]);
             std::snprintf(t2, sizeof t2, "p = %g, averaged equation", powers[j]);
-            cmd += std::string(j ? ", " : "") + "'-' with points ls " + std::to_string(j + 1) + " pt 7 ps 1.2 title '" + t1 +
-                   "', '-' with lines ls " + std::to_string(j + 1) + " dt 2 title '" + t2 + "'";
+            cmd += std::string(j ? ", " : "") + "'-' with points ls " + std::to_string(j + 1) + " pt 7 ps 1.2 title '" +
+                   t1 + "', '-' with lines ls " + std::to_string(j + 1) + " dt 2 title '" + t2 + "'";
         }
         fe << cmd + "\n";
         for (double p : powers) {

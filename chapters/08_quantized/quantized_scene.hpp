@@ -101,22 +101,25 @@ private:
     std::uint64_t state_;
 };
 
-// The scenes' oscillator options, checked by the kit (bad input: exit status 2, naming the option).
-inline void oscillator_options(kit::Options& opts, double kappa, double power) {
-    opts.real("m", 2.0, "the mass m in (6.1)", kit::between(1e-2, 1e2))
-        .real("omega", 2.0, "omega in (6.1): the restoring force is omega^2 q (frequency omega / sqrt(m))",
+// The oscillator of (6.1) and its friction k(E), bound to the scenes' options --m --omega
+// --kappa --E0 --power (each range checked by the kit: bad input, exit status 2, naming the option).
+struct OscillatorParams {
+    double m = 2.0, omega = 2.0, kappa = 0.5, E0 = 1.0, power = 2.0;
+};
+inline void oscillator_options(kit::Options& opts, OscillatorParams& p) {
+    opts.real("m", &p.m, "the mass m in (6.1)", kit::between(1e-2, 1e2))
+        .real("omega", &p.omega, "omega in (6.1): the restoring force is omega^2 q (frequency omega / sqrt(m))",
               kit::between(1e-2, 1e2))
-        .real("kappa", kappa, "the largest friction coefficient, k(E) = kappa |sin(pi E / E0)|^power", kit::between(1e-6, 1e2))
-        .real("E0", 1.0, "the spacing of the energy levels E_n = n E0", kit::between(1e-3, 1e3))
-        .real("power", power, "the order of the zeros of k(E) (2 smooth, 1 a kink)", kit::between(1, 8));
+        .real("kappa", &p.kappa, "the largest friction coefficient, k(E) = kappa |sin(pi E / E0)|^power",
+              kit::between(1e-6, 1e2))
+        .real("E0", &p.E0, "the spacing of the energy levels E_n = n E0", kit::between(1e-3, 1e3))
+        .real("power", &p.power, "the order of the zeros of k(E) (2 smooth, 1 a kink)", kit::between(1, 8));
 }
 // About how long rk8pd at tolerance 1e-12 takes per radian of the oscillator's phase, for the
 // scenes' work estimates (measured on one core, within a factor 3).
 constexpr double seconds_per_radian = 4e-5;
 
-inline rigid::Oscillator oscillator_from(const kit::Options& o) { return {o.real("m"), o.real("omega")}; }
-inline rigid::LevelFriction friction_from(const kit::Options& o) {
-    return {o.real("kappa"), o.real("E0"), o.real("power")};
-}
+inline rigid::Oscillator oscillator_from(const OscillatorParams& p) { return {p.m, p.omega}; }
+inline rigid::LevelFriction friction_from(const OscillatorParams& p) { return {p.kappa, p.E0, p.power}; }
 
 }  // namespace scene8

@@ -7,7 +7,9 @@
 // Each option's own range (finite, > 0) is checked by kit::Options; what lies between the
 // three moments is checked here:
 //
-//   kit::require_moments(p.A, p.B, p.C, {"A", "B", "C"});       // A < B < C, A + B >= C
+//   kit::moment_options(opts, p.body);                           // --A --B --C, bound to p.body
+//   kit::require_moments(p.body);                                // A < B < C, A + B >= C
+//   kit::require_moments(p.A, p.B, p.C, {"A", "B", "C"});       // the same, for any three names
 //   kit::require_moments(p.I, "I", {kit::Order::distinct});      // three distinct moments
 //
 // and a failure is kit::BadInput (exit status 2), e.g.
@@ -64,10 +66,11 @@ inline void check_moments(const rigid::Vec3& m, const std::string& options, cons
                            ? largest < sum
                            : largest <= sum * (1 + 8 * std::numeric_limits<double>::epsilon());
     if (!holds)
-        throw BadInput(fmt::format("{}: the moments must obey the triangle inequality {} + {} {} {} (a real body), got "
-                                   "{} + {} = {:.17g}, {} = {:.17g}",
-                                   options, s[k[0]], s[k[1]], rules.triangle == Triangle::strict ? ">" : ">=", s[k[2]],
-                                   s[k[0]], s[k[1]], sum, s[k[2]], largest));
+        throw BadInput(
+            fmt::format("{}: the moments must obey the triangle inequality {} + {} {} {} (a real body), got "
+                        "{} + {} = {:.17g}, {} = {:.17g}",
+                        options, s[k[0]], s[k[1]], rules.triangle == Triangle::strict ? ">" : ">=", s[k[2]], s[k[0]],
+                        s[k[1]], sum, s[k[2]], largest));
     if (rules.order == Order::increasing && !(m(0) < m(1) && m(1) < m(2)))
         throw BadInput(fmt::format("{}: the moments must be strictly ordered, {} < {} < {} (an asymmetric body), {}",
                                    options, s[0], s[1], s[2], got));
@@ -86,6 +89,34 @@ inline void require_moments(double a, double b, double c, const MomentNames& n, 
 // Three moments given as one option x,y,z (--I I1,I2,I3), in any order.
 inline void require_moments(const rigid::Vec3& I, const std::string& name, BodyRules rules) {
     detail::check_moments(I, "--" + name, {name + "1", name + "2", name + "3"}, rules);
+}
+
+// The principal moments at O as the options --A --B --C (Chapters 4, 5, 8): declared once, so
+// every scene that takes them names, ranges and explains them the same way.
+struct MomentsAtO {
+    double A = 1.0, B = 1.5, C = 2.2;
+};
+
+inline Options& moment_options(Options& opts, MomentsAtO& m) {
+    return opts.real("A", &m.A, "smallest principal moment at O", between(1e-6, 1e6))
+        .real("B", &m.B, "intermediate principal moment at O", between(1e-6, 1e6))
+        .real("C", &m.C, "largest principal moment at O (A + B >= C)", between(1e-6, 1e6));
+}
+
+// A < B < C and A + B >= C, or BadInput naming --A, --B, --C. Returns (A, B, C).
+inline rigid::Vec3 require_moments(const MomentsAtO& m) {
+    require_moments(m.A, m.B, m.C, {"A", "B", "C"});
+    return {m.A, m.B, m.C};
+}
+
+// A heavy body (Chapters 5 and 8): its moments at O and f = g L mu, --A --B --C --f.
+struct HeavyBody {
+    MomentsAtO moments;
+    double f = 1.0;
+};
+
+inline Options& heavy_body_options(Options& opts, HeavyBody& b) {
+    return moment_options(opts, b.moments).real("f", &b.f, "f = g L mu", between(1e-6, 1e6));
 }
 
 }  // namespace kit

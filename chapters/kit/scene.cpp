@@ -164,7 +164,8 @@ Options& Options::integer(const std::string& name, long fallback, const std::str
     s.shown_default = std::to_string(fallback);
     s.lo = static_cast<double>(min);
     s.hi = static_cast<double>(max);
-    if (fallback < min || fallback > max) throw std::logic_error("option --" + name + ": its default is outside its range");
+    if (fallback < min || fallback > max)
+        throw std::logic_error("option --" + name + ": its default is outside its range");
     integers_[name] = fallback;
     s.set = [this, name, min, max, rule_text = s.rule_text](const std::string& word) {
         char* end = nullptr;
@@ -203,8 +204,8 @@ Options& Options::vector(const std::string& name, const rigid::Vec3& fallback, c
     return *this;
 }
 
-Options& Options::choice(const std::string& name, const std::string& fallback,
-                         const std::vector<std::string>& choices, const std::string& help) {
+Options& Options::choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& choices,
+                         const std::string& help) {
     Spec& s = add(name);
     s.kind = "word";
     s.help = help;
@@ -282,7 +283,8 @@ bool Options::parse(int argc, char** argv) {
             print_option_list(std::cout);
             return false;
         }
-        if (arg.rfind("--", 0) != 0) throw BadInput("unexpected argument '" + arg + "' (options start with --; see --help)");
+        if (arg.rfind("--", 0) != 0)
+            throw BadInput("unexpected argument '" + arg + "' (options start with --; see --help)");
         std::string name = arg.substr(2), value;
         bool has_value = false;
         if (const auto eq = name.find('='); eq != std::string::npos) {
@@ -296,7 +298,9 @@ bool Options::parse(int argc, char** argv) {
             // A value may itself start with '-' (a negative number), but never with "--".
             if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
                 throw BadInput("--" + name + ": needs a value" +
-                               (spec ? " (" + spec->rule_text + ")" : name == "out" ? " (a folder)" : " (seconds)"));
+                               (spec            ? " (" + spec->rule_text + ")"
+                                : name == "out" ? " (a folder)"
+                                                : " (seconds)"));
             value = argv[++i];
         }
         if (name == "out") {
@@ -304,7 +308,8 @@ bool Options::parse(int argc, char** argv) {
             out_dir_ = value;
         } else if (name == "budget") {
             const double b = parse_real(name, value);
-            if (!(b >= 1 && b <= 86400)) throw BadInput("--budget: got " + value + "; it must be a number of seconds in [1, 86400]");
+            if (!(b >= 1 && b <= 86400))
+                throw BadInput("--budget: got " + value + "; it must be a number of seconds in [1, 86400]");
             budget_s_ = b;
         } else {
             spec->set(value);
@@ -324,14 +329,9 @@ std::string Options::unknown_option(const std::string& name) const {
             best = d;
             nearest = s.name;
         }
-    return "unknown option --" + name + (nearest.empty() ? "" : " (did you mean --" + nearest + "?)") + "; " +
-           scene_ + " takes " + option_names();
+    return "unknown option --" + name + (nearest.empty() ? "" : " (did you mean --" + nearest + "?)") + "; " + scene_ +
+           " takes " + option_names();
 }
-
-double Options::real(const std::string& name) const { return reals_.at(name); }
-long Options::integer(const std::string& name) const { return integers_.at(name); }
-rigid::Vec3 Options::vector(const std::string& name) const { return vectors_.at(name); }
-const std::string& Options::choice(const std::string& name) const { return choices_.at(name); }
 
 void Options::print_help(std::ostream& os) const {
     os << scene_ << ": " << summary_ << "\n\nUsage: " << scene_ << " [options]\n\nOptions:\n";
@@ -342,7 +342,8 @@ void Options::print_help(std::ostream& os) const {
     os << "  --out DIR      folder for the figures (default: the current folder)\n"
           "  --no-figure    compute and report, draw nothing\n"
           "  --json         print the results as one JSON object on stdout\n"
-          "  --budget S     the run time allowed, in seconds (default " << short_number(default_budget_s)
+          "  --budget S     the run time allowed, in seconds (default "
+       << short_number(default_budget_s)
        << ", about a minute on one core):\n"
           "                 a request whose estimated work is over it is refused (exit status 2)\n"
           "  --list-options every option with its default and accepted range, as JSON\n"
@@ -523,12 +524,12 @@ int run(int argc, char** argv, Options& opts, const std::function<void(const Opt
         const auto t0 = std::chrono::steady_clock::now();
         body(opts, scene);
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        if (!scene.report.has_headline())
-            throw std::logic_error("the scene gave no headline (error against run time)");
+        if (!scene.report.has_headline()) throw std::logic_error("the scene gave no headline (error against run time)");
         scene.publish_figures();
         if (opts.json()) {
             scene.report.add("wall_time_s", wall, "the whole scene, figures included");
-            scene.report.add("estimated_time_s", estimated_s, "the scene's own estimate of its work, checked against --budget");
+            scene.report.add("estimated_time_s", estimated_s,
+                             "the scene's own estimate of its work, checked against --budget");
             scene.report.write_json(std::cout, opts, scene.figures());
         } else {
             std::cout << who << ": " << opts.summary() << "\n";

@@ -59,7 +59,7 @@ struct NumericalFailure : std::runtime_error {
 // The range a number must lie in, lo <= x <= hi, both finite: every numeric option declares
 // what its scene can do, and --list-options gives it to the corner sweep of the test suite.
 struct Rule {
-    std::string text;                     // e.g. "a number in [1e-06, 1e+06]"
+    std::string text;  // e.g. "a number in [1e-06, 1e+06]"
     double lo, hi;
     bool holds(double x) const { return std::isfinite(x) && x >= lo && x <= hi; }
 };
@@ -79,15 +79,9 @@ class Options {
 public:
     Options(std::string scene, std::string summary);
 
-    Options& real(const std::string& name, double fallback, const std::string& help, Rule rule);
-    Options& integer(const std::string& name, long fallback, const std::string& help, long min, long max);
-    Options& vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help,
-                    VecRule rule);
-    Options& choice(const std::string& name, const std::string& fallback,
-                    const std::vector<std::string>& choices, const std::string& help);
-
-    // The same, bound to a typed field: its initial value is the default, and parse() writes
-    // the value given on the command line into it. The field must outlive the parse.
+    // An option bound to a typed field: the field's initial value is the default, and parse()
+    // writes the value given on the command line into it. The field must outlive the parse.
+    // A scene reads its parameters from its fields, never from the options by name.
     Options& real(const std::string& name, double* field, const std::string& help, Rule rule);
     Options& integer(const std::string& name, long* field, const std::string& help, long min, long max);
     Options& integer(const std::string& name, int* field, const std::string& help, int min, int max);
@@ -98,30 +92,32 @@ public:
     // Reads argv; throws BadInput naming the option and the rule. Returns false after --help.
     bool parse(int argc, char** argv);
 
-    double real(const std::string& name) const;
-    long integer(const std::string& name) const;
-    rigid::Vec3 vector(const std::string& name) const;
-    const std::string& choice(const std::string& name) const;
-
     const std::string& scene() const { return scene_; }
     const std::string& summary() const { return summary_; }
     const std::string& out_dir() const { return out_dir_; }
     bool figures() const { return figures_; }
     bool json() const { return json_; }
-    double budget_s() const { return budget_s_; }   // --budget SECONDS
+    double budget_s() const { return budget_s_; }  // --budget SECONDS
     void print_help(std::ostream& os) const;
-    void print_option_list(std::ostream& os) const;   // --list-options: JSON
+    void print_option_list(std::ostream& os) const;  // --list-options: JSON
     // "--A, --B, ..., --help": every option the scene accepts, its own and the kit's.
     std::string option_names() const;
 
 private:
+    // The declarations behind the typed ones: the value is kept by name until bound.
+    Options& real(const std::string& name, double fallback, const std::string& help, Rule rule);
+    Options& integer(const std::string& name, long fallback, const std::string& help, long min, long max);
+    Options& vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help, VecRule rule);
+    Options& choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& choices,
+                    const std::string& help);
+
     struct Spec {
         std::string name, help, kind, rule_text;
         std::vector<std::string> choices;
-        std::function<void(const std::string&)> set;   // parses and checks one value
-        std::function<void()> bind;                    // writes the value into a bound field
+        std::function<void(const std::string&)> set;  // parses and checks one value
+        std::function<void()> bind;                   // writes the value into a bound field
         std::string shown_default;
-        double lo = 0, hi = 0;                         // the accepted range (numbers, integers, vectors)
+        double lo = 0, hi = 0;  // the accepted range (numbers, integers, vectors)
     };
     Spec& add(const std::string& name);
     std::string unknown_option(const std::string& name) const;
@@ -168,8 +164,8 @@ public:
     void add(const std::string& key, Value value, const std::string& unit_or_note = "");
     // A table (e.g. a work-precision sweep): column names and rows of numbers. Every table
     // goes to the JSON; with in_text false, a long one stays out of the printed report.
-    void table(const std::string& key, std::vector<std::string> columns,
-               std::vector<std::vector<double>> rows, bool in_text = true);
+    void table(const std::string& key, std::vector<std::string> columns, std::vector<std::vector<double>> rows,
+               bool in_text = true);
     void note(const std::string& text) { notes_.push_back(text); }
 
     bool has_headline() const { return has_headline_; }
@@ -206,8 +202,8 @@ public:
 
     // Called by kit::Figure: a finished figure waits at `staged` until the scene succeeds.
     void stage_figure(const std::string& staged, const std::string& final_path);
-    void publish_figures();   // renames staged files to their final names
-    void discard_figures();   // removes staged files (the scene failed, or overran its budget)
+    void publish_figures();  // renames staged files to their final names
+    void discard_figures();  // removes staged files (the scene failed, or overran its budget)
     const std::vector<std::string>& figures() const { return published_; }
 
 private:

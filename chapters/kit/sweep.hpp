@@ -6,12 +6,15 @@
 // Header-only: a scene that includes it links the integrators topic (rigid/integrators.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
 #include "rigid/integrators.hpp"
 #include "rigid/ode.hpp"
+#include "scene.hpp"
 
 namespace kit {
 
@@ -41,8 +44,34 @@ inline std::vector<SweepCase> rk4_rkf45_rk8pd_sweep() {
 }
 
 // The method's column in the sweeps' tables: 0 rk4, 1 rkf45, 2 rk8pd.
-inline double sweep_method_id(const std::string& method) {
-    return method == "rk4" ? 0 : method == "rkf45" ? 1 : 2;
+inline double sweep_method_id(const std::string& method) { return method == "rk4" ? 0 : method == "rkf45" ? 1 : 2; }
+
+// Every case of that sweep, timed: run(c) integrates once and returns its run (the smallest
+// time of `repeats` calls is kept), row(c, run, seconds) makes the case's row of the table.
+template <class Run, class Row>
+std::vector<std::vector<double>> timed_sweep(int repeats, Run run, Row row) {
+    std::vector<std::vector<double>> rows;
+    for (const SweepCase& c : rk4_rkf45_rk8pd_sweep()) {
+        decltype(run(c)) result;
+        const double t = min_time([&] { result = run(c); }, repeats);
+        rows.push_back(row(c, result, t));
+    }
+    return rows;
+}
+
+// The points of the rows whose column `key` is `value`, for a log-log figure: (row[x],
+// the largest of the row's columns ys, at least 1e-17).
+inline std::vector<std::vector<double>> points_where(const std::vector<std::vector<double>>& rows, std::size_t key,
+                                                     double value, std::size_t x,
+                                                     std::initializer_list<std::size_t> ys) {
+    std::vector<std::vector<double>> out;
+    for (const auto& r : rows) {
+        if (r[key] != value) continue;
+        double y = 1e-17;
+        for (std::size_t c : ys) y = std::max(y, r[c]);
+        out.push_back({r[x], y});
+    }
+    return out;
 }
 
 }  // namespace kit

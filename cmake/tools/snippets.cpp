@@ -358,8 +358,9 @@ private:
         }
     }
 
-    // The scene exists, and every --option given to it is one it declares: in its own source or
-    // in a header of its chapter folder (a chapter may declare shared options in a common header).
+    // The scene exists, and every --option given to it is one it declares: in its own source, in a
+    // header of its chapter folder (a chapter may declare shared options in a common header) or of
+    // the scene kit (the body's moments --A --B --C are declared in kit/body.hpp).
     void scene_options(const std::string& scene, const std::string& args_text, const std::string& where) {
         static const std::set<std::string> common = {"help", "json", "out", "no-figure", "budget", "list-options"};
         const auto src = corpus_.scene_sources.find(scene);
@@ -368,8 +369,9 @@ private:
             return;
         }
         std::string text = prose::read_text(src->second);
-        for (const auto& e : fs::directory_iterator(fs::path(src->second).parent_path()))
-            if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
+        for (const auto& dir : {fs::path(src->second).parent_path(), root_ / "chapters" / "kit"})
+            for (const auto& e : fs::directory_iterator(dir))
+                if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
         std::istringstream args(args_text);
         for (std::string a; args >> a;) {
             if (a.rfind("--", 0) != 0) continue;
