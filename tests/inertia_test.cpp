@@ -631,6 +631,43 @@ TEST_CASE("circular_section_normals: at G they are the Grioli lines") {
     }
 }
 
+// The header fixes the signs: n_+- = c_A u_A +- c_C u_C with u_A, u_C each having its largest
+// component positive. For I = Q diag(A, B, C) Q^T the principal axes are the columns of Q, so
+// the expected normals follow from Q alone (no eigen-solver). Rotated tensors matter: the
+// eigenvectors of a diagonal tensor are +-e_k exactly, where a wrong sign rule can hide.
+TEST_CASE("circular_section_normals: the documented signs and order for a rotated tensor") {
+    auto fixed_sign = [](const Vec3& u) {
+        Eigen::Index i;
+        u.cwiseAbs().maxCoeff(&i);
+        return u(i) > 0 ? u : Vec3(-u);
+    };
+    // A rotation whose first and last columns have a clear largest component (no tie to break).
+    auto clear = [](const Vec3& u) {
+        Vec3 a = u.cwiseAbs();
+        std::sort(a.data(), a.data() + 3);
+        return a(2) - a(1) > 1e-3;
+    };
+    int tested = 0, flipped = 0;
+    for (int n = 0; tested < 30; ++n) {
+        REQUIRE(n < 1000);
+        const BodyAtG b = random_body();
+        const double gap = std::min(b.B_g - b.A_g, b.C_g - b.B_g);
+        const Mat3 Q = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+        if (gap < 0.02 || !clear(Q.col(0)) || !clear(Q.col(2))) continue;
+        ++tested;
+        const Mat3 I = Q * Vec3(b.A_g, b.B_g, b.C_g).asDiagonal() * Q.transpose();
+        const Vec3 uA = fixed_sign(Q.col(0)), uC = fixed_sign(Q.col(2));
+        flipped += uA != Vec3(Q.col(0));
+        const double cA = std::sqrt((b.B_g - b.A_g) / (b.C_g - b.A_g)), cC = std::sqrt((b.C_g - b.B_g) / (b.C_g - b.A_g));
+        const auto normals = rigid::circular_section_normals(I);
+        // Eigenvectors are accurate to about eps |I| / gap.
+        const double tol = 100 * eps * b.C_g / gap;
+        CHECK_MAT_NEAR(normals[0], Vec3(cA * uA + cC * uC), tol);
+        CHECK_MAT_NEAR(normals[1], Vec3(cA * uA - cC * uC), tol);
+    }
+    CHECK(flipped > 0);  // the sample holds axes whose sign the rule must change
+}
+
 TEST_CASE("circular_section_normals: rejects a tensor that is not symmetric or not positive or has equal eigenvalues") {
     Mat3 bad = Vec3(1, 2, 3).asDiagonal();
     bad(0, 2) = 0.5;

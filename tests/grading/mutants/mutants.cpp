@@ -7,10 +7,11 @@
 //
 // A mutant is the reference solution solutions/<topic>.cpp with one plausible wrong change, made
 // by one of a fixed set of operators (mutate_line below; comments, string and character literals
-// and preprocessor lines are never touched). Each mutant is a submission holding that one file;
-// the instructor's grading run (workbook_grade grade) grades them all, with its per-test isolation
-// and limits. A mutant inside an exercise function is killed when a test of that exercise does
-// not pass; a mutant inside a helper of the file when any test of the topic does not pass. A
+// and preprocessor lines are never touched). Each mutant is a submission holding that one file,
+// graded by the grading run (workbook_grade check: its build flags, per-test isolation, limits
+// and verdicts), -j at a time. A mutant inside an exercise function is killed when a test of
+// that exercise does not pass, so only that exercise's tests are run; a mutant inside a helper
+// of the file is killed when any test of the topic does not pass, so all of them are run. A
 // mutant that does not build is counted apart. A survivor is equivalent only when allowed.txt
 // lists it, with the reason; any other survivor fails the run (exit 1): a grader to strengthen.
 #include <sys/wait.h>
@@ -38,11 +39,11 @@ namespace {
 
 struct Mutant {
     std::string id, topic, function, op;
-    int line = 0;                       // 1-based line of solutions/<topic>.cpp
-    std::string before, after;          // the line, trimmed, before and after the change
-    std::string source;                 // the whole mutated file
-    bool exercise = false;              // function is an exercise of the topic (else a helper)
-    std::string status, evidence;       // killed | survived | equivalent | not compiling
+    int line = 0;                  // 1-based line of solutions/<topic>.cpp
+    std::string before, after;     // the line, trimmed, before and after the change
+    std::string source;            // the whole mutated file
+    bool exercise = false;         // function is an exercise of the topic (else a helper)
+    std::string status, evidence;  // killed | survived | equivalent | not compiling
 };
 
 struct Options {
@@ -95,8 +96,10 @@ std::vector<bool> code_mask(const std::string& s) {
             while (end < s.size() && s[end] != c) end += s[end] == '\\' ? 2 : 1;
             ++end;
         } else {
-            if (c == '\n') line_start = true;
-            else if (c != ' ' && c != '\t') line_start = false;
+            if (c == '\n')
+                line_start = true;
+            else if (c != ' ' && c != '\t')
+                line_start = false;
             ++i;
             continue;
         }
@@ -117,8 +120,8 @@ struct Body {
 bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The name of the function whose header ends at `open` (a '{'), or "" if it is not a function.
-std::string function_name(const std::string& s, const std::vector<bool>& code, std::size_t from,
-                          std::size_t open, std::string* header) {
+std::string function_name(const std::string& s, const std::vector<bool>& code, std::size_t from, std::size_t open,
+                          std::string* header) {
     std::string h;
     for (std::size_t k = from; k < open; ++k) h += code[k] ? s[k] : ' ';
     *header = trim(h);
@@ -195,12 +198,14 @@ void sign_sites(const std::string& l, const std::vector<bool>& m, std::vector<Si
         const char c = l[i];
         if ((c != '+' && c != '-') || !code_at(m, i, 1)) continue;
         const char next = i + 1 < l.size() ? l[i + 1] : '\0', prev = i > 0 ? l[i - 1] : '\0';
-        if (next == c || prev == c || next == '>') continue;  // ++ -- ->
+        if (next == c || prev == c || next == '>') continue;                                           // ++ -- ->
         if (std::isdigit(static_cast<unsigned char>(next)) && (prev == 'e' || prev == 'E')) continue;  // 1e-9
         const char p = previous(l, i);
         const bool binary = is_ident(p) || p == ')' || p == ']';
-        if (binary) out.push_back({"sign", replace_at(l, i, 1, c == '+' ? "-" : "+")});
-        else if (c == '-' && next != '=') out.push_back({"sign", replace_at(l, i, 1, "")});
+        if (binary)
+            out.push_back({"sign", replace_at(l, i, 1, c == '+' ? "-" : "+")});
+        else if (c == '-' && next != '=')
+            out.push_back({"sign", replace_at(l, i, 1, "")});
     }
 }
 
@@ -239,29 +244,43 @@ std::string bumped(const std::string& literal) {
 }
 
 void other_sites(const std::string& l, const std::vector<bool>& m, bool returns_bool, std::vector<Site>& out) {
-    static const std::regex index2(R"(\b([A-Za-z_]\w*)\((\w), (\w)\))"),
-        component(R"(\.([xyz])\(\))"), trig(R"(\b(sin|cos)\()"),
-        literal(R"((^|[^\w.])(\d+\.?\d*(?:[eE][-+]?\d+)?)(?![\w.]))"), ret(R"(\breturn ([^;]+);)"),
-        cond(R"(\bif \((.*)\)( \{| return| throw|$))");
+    static const std::regex index2(R"(\b([A-Za-z_]\w*)\((\w), (\w)\))"), component(R"(\.([xyz])\(\))"),
+        trig(R"(\b(sin|cos)\()"), literal(R"((^|[^\w.])(\d+\.?\d*(?:[eE][-+]?\d+)?)(?![\w.]))"),
+        ret(R"(\breturn ([^;]+);)"), cond(R"(\bif \((.*)\)( \{| return| throw|$))");
     for (auto at = l.find(".transpose()"); at != std::string::npos; at = l.find(".transpose()", at + 1))
         if (code_at(m, at, 12)) out.push_back({"transpose", replace_at(l, at, 12, "")});
-    regex_sites(l, m, "index", index2, [](const std::smatch& x) {
-        const std::string f = x[1];
-        if (x[2] == x[3] || f == "max" || f == "min" || f == "if" || f == "for" || f == "while") return std::string();
-        return f + "(" + x[3].str() + ", " + x[2].str() + ")";
-    }, out);
-    regex_sites(l, m, "index", component, [](const std::smatch& x) {
-        return std::string(".") + (x[1] == "x" ? "y" : x[1] == "y" ? "z" : "x") + "()";
-    }, out);
-    regex_sites(l, m, "sincos", trig, [](const std::smatch& x) { return std::string(x[1] == "sin" ? "cos(" : "sin("); }, out);
-    regex_sites(l, m, "constant", literal, [](const std::smatch& x) {
-        const std::string b = bumped(x[2]);
-        return b.empty() ? b : x[1].str() + b;
-    }, out);
-    regex_sites(l, m, "return", ret, [returns_bool](const std::smatch& x) {
-        return "return " + std::string(returns_bool ? "!(" : "-(") + x[1].str() + ");";
-    }, out);
-    regex_sites(l, m, "condition", cond, [](const std::smatch& x) { return "if (!(" + x[1].str() + "))" + x[2].str(); }, out);
+    regex_sites(
+        l, m, "index", index2,
+        [](const std::smatch& x) {
+            const std::string f = x[1];
+            if (x[2] == x[3] || f == "max" || f == "min" || f == "if" || f == "for" || f == "while")
+                return std::string();
+            return f + "(" + x[3].str() + ", " + x[2].str() + ")";
+        },
+        out);
+    regex_sites(
+        l, m, "index", component,
+        [](const std::smatch& x) {
+            return std::string(".") + (x[1] == "x" ? "y" : x[1] == "y" ? "z" : "x") + "()";
+        },
+        out);
+    regex_sites(
+        l, m, "sincos", trig, [](const std::smatch& x) { return std::string(x[1] == "sin" ? "cos(" : "sin("); }, out);
+    regex_sites(
+        l, m, "constant", literal,
+        [](const std::smatch& x) {
+            const std::string b = bumped(x[2]);
+            return b.empty() ? b : x[1].str() + b;
+        },
+        out);
+    regex_sites(
+        l, m, "return", ret,
+        [returns_bool](const std::smatch& x) {
+            return "return " + std::string(returns_bool ? "!(" : "-(") + x[1].str() + ");";
+        },
+        out);
+    regex_sites(
+        l, m, "condition", cond, [](const std::smatch& x) { return "if (!(" + x[1].str() + "))" + x[2].str(); }, out);
 }
 
 std::vector<Site> mutate_line(const std::string& line, const std::vector<bool>& mask, bool returns_bool) {
@@ -332,7 +351,8 @@ std::vector<Mutant> sample(std::vector<Mutant> all, int n, unsigned seed) {
     if (n <= 0) return all;
     auto key = [seed](const Mutant& m) {
         std::uint64_t h = 1469598103934665603ull ^ seed;
-        for (char c : m.topic + m.function + m.after + std::to_string(m.line)) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+        for (char c : m.topic + m.function + m.after + std::to_string(m.line))
+            h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
         return h;
     };
     std::stable_sort(all.begin(), all.end(), [&](const Mutant& a, const Mutant& b) {
@@ -381,18 +401,23 @@ std::map<std::string, std::string> allowlist(const std::string& path) {
         std::size_t from = 0;
         for (int k = 0; k < 3; ++k) {
             const auto bar = line.find(" | ", from);
-            if (bar == std::string::npos) die(path + ":" + std::to_string(n) + ": expected 'topic | function | mutated line | reason'");
+            if (bar == std::string::npos)
+                die(path + ":" + std::to_string(n) + ": expected 'topic | function | mutated line | reason'");
             f.push_back(trim(line.substr(from, bar - from)));
             from = bar + 3;
         }
         const std::string reason = trim(line.substr(from));
-        if (reason.size() < 20) die(path + ":" + std::to_string(n) + ": an equivalent mutant needs its reason (20 characters or more)");
+        if (reason.size() < 20)
+            die(path + ":" + std::to_string(n) + ": an equivalent mutant needs its reason (20 characters or more)");
         allowed[allow_key(f[0], f[1], f[2])] = reason;
     }
     return allowed;
 }
 
-// ---- Grading: one submission per mutant, the instructor's grading run over all of them. ----
+// ---- Grading: each mutant is a submission holding that one file, graded by the grading run's
+// student check (workbook_grade check: the same build flags, isolation, limits and verdicts as
+// `grade`) on what can kill it: its exercise, or its whole topic for a helper. Tests of the
+// topic's other exercises cannot kill an exercise's mutant, so they are not run. ----
 
 void write_submissions(const std::vector<Mutant>& mutants, const fs::path& folder) {
     fs::remove_all(folder);
@@ -402,23 +427,53 @@ void write_submissions(const std::vector<Mutant>& mutants, const fs::path& folde
     }
 }
 
-int run_grading(const Options& o, const fs::path& submissions, const fs::path& grades) {
+// Starts `workbook_grade check` on one mutant, its output to <checks>/<id>.log; returns the pid.
+pid_t start_check(const Options& o, const Mutant& m, const fs::path& submissions, const fs::path& checks) {
     const std::string harness = (fs::path(o.setup) / "workbook_grade").string();
-    std::vector<std::string> args = {harness, "grade", "--setup", o.setup, submissions.string(), grades.string(),
-                                     "-j", std::to_string(o.jobs), "--timeout", std::to_string(o.timeout),
-                                     "--build-timeout", std::to_string(o.build_timeout), "--force"};
+    std::vector<std::string> args = {harness,           "check",
+                                     "--setup",         o.setup,
+                                     "--folder",        (submissions / m.id / "exercises").string(),
+                                     "--out",           (checks / m.id).string(),
+                                     "--timeout",       std::to_string(o.timeout),
+                                     "--build-timeout", std::to_string(o.build_timeout)};
+    // A helper's mutant: every topic (the others are missing from the submission, so not built;
+    // naming the topic could select an exercise of the same name, such as heavy_top).
+    if (m.exercise) args.push_back(m.function);
+    const std::string log = (checks / (m.id + ".log")).string();
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     const pid_t pid = fork();
+    if (pid < 0) die("cannot fork");
     if (pid == 0) {
+        if (!std::freopen(log.c_str(), "w", stdout) || dup2(fileno(stdout), 2) < 0) _exit(127);
         execv(argv[0], argv.data());
         std::perror("workbook_mutants: cannot start workbook_grade");
         _exit(127);
     }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    return pid;
+}
+
+// Grades every mutant, o.jobs at a time; `done(k, status)` is called as mutant k finishes.
+void run_checks(const Options& o, const std::vector<Mutant>& mutants, const fs::path& submissions,
+                const fs::path& checks, const std::function<void(std::size_t, int)>& done) {
+    fs::remove_all(checks);
+    fs::create_directories(checks);
+    std::map<pid_t, std::size_t> running;
+    std::size_t next = 0;
+    while (next < mutants.size() || !running.empty()) {
+        while (next < mutants.size() && static_cast<int>(running.size()) < o.jobs) {
+            running[start_check(o, mutants[next], submissions, checks)] = next;
+            ++next;
+        }
+        int status = 0;
+        const pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) die("waitpid failed");
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        done(it->second, WIFEXITED(status) ? WEXITSTATUS(status) : 128);
+        running.erase(it);
+    }
 }
 
 void classify(Mutant& m, const json& result, const std::map<std::string, std::string>& allowed) {
@@ -442,11 +497,16 @@ void classify(Mutant& m, const json& result, const std::map<std::string, std::st
         }
     }
     const auto a = allowed.find(allow_key(m.topic, m.function, m.after));
-    if (build_error) m.status = "not compiling";
-    else if (killed) m.status = "killed";
-    else if (a != allowed.end()) m.status = "equivalent", m.evidence = a->second;
-    else m.status = "survived";
-    if (killed && a != allowed.end()) m.evidence += " (listed as equivalent in the allowlist, yet killed: remove that entry)";
+    if (build_error)
+        m.status = "not compiling";
+    else if (killed)
+        m.status = "killed";
+    else if (a != allowed.end())
+        m.status = "equivalent", m.evidence = a->second;
+    else
+        m.status = "survived";
+    if (killed && a != allowed.end())
+        m.evidence += " (listed as equivalent in the allowlist, yet killed: remove that entry)";
 }
 
 // ---- The report: a table per topic and per exercise, then the survivors. ----
@@ -474,10 +534,13 @@ std::string report(const std::vector<Mutant>& mutants, double seconds, const Opt
         topic[m.topic].add(m), exercise[m.topic + "::" + (m.exercise ? m.function : "(helpers)")].add(m), all.add(m);
     }
     std::ostringstream s;
-    s << "# Mutation gate\n\n" << all.mutants << " mutants of solutions/ ("
-      << (o.sample ? "a sample of " + std::to_string(o.sample) + " per topic, seed " + std::to_string(o.seed) : "all of them")
+    s << "# Mutation gate\n\n"
+      << all.mutants << " mutants of solutions/ ("
+      << (o.sample ? "a sample of " + std::to_string(o.sample) + " per topic, seed " + std::to_string(o.seed)
+                   : "all of them")
       << "), graded in " << static_cast<int>(seconds + 0.5) << " s with -j " << o.jobs << ".\n\n";
-    const std::string head = "| mutants | killed | survived | equivalent | not compiling |\n|---|---:|---:|---:|---:|---:|\n";
+    const std::string head =
+        "| mutants | killed | survived | equivalent | not compiling |\n|---|---:|---:|---:|---:|---:|\n";
     s << "| topic " << head;
     for (const auto& [name, t] : topic) s << row(name, t);
     s << row("**all**", all) << "\n## Per exercise\n\n| exercise " << head;
@@ -486,47 +549,57 @@ std::string report(const std::vector<Mutant>& mutants, double seconds, const Opt
     for (const auto& m : mutants)
         if (m.status == "survived" || m.status == "equivalent")
             s << "- **" << m.status << "** " << m.id << " (" << m.op << ", " << m.topic << ".cpp:" << m.line << ", "
-              << m.function << "): `" << m.before << "` → `" << m.after << "`" << (m.evidence.empty() ? "" : ": " + m.evidence)
-              << "\n";
+              << m.function << "): `" << m.before << "` → `" << m.after << "`"
+              << (m.evidence.empty() ? "" : ": " + m.evidence) << "\n";
     return s.str();
 }
 
 json to_json(const Mutant& m) {
-    return {{"id", m.id},         {"topic", m.topic},   {"function", m.function}, {"exercise", m.exercise},
-            {"operator", m.op},   {"line", m.line},     {"before", m.before},     {"after", m.after},
+    return {{"id", m.id},         {"topic", m.topic},      {"function", m.function}, {"exercise", m.exercise},
+            {"operator", m.op},   {"line", m.line},        {"before", m.before},     {"after", m.after},
             {"status", m.status}, {"evidence", m.evidence}};
 }
 
 int run(const Options& o) {
     auto mutants = generate(o);
     const auto allowed = allowlist(o.allow);
-    const fs::path out = o.out, submissions = out / "submissions", grades = out / "grades";
+    const fs::path out = o.out, submissions = out / "submissions", checks = out / "checks";
     fs::create_directories(out);
     write_submissions(mutants, submissions);
     std::fprintf(stderr, "workbook_mutants: grading %zu mutants with -j %d\n", mutants.size(), o.jobs);
     const auto start = std::chrono::steady_clock::now();
-    const int status = run_grading(o, submissions, grades);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (status != 0 && status != 1) die("the grading run failed with status " + std::to_string(status));
-    json all = json::array();
-    for (auto& m : mutants) {
-        const fs::path result = grades / "results" / (m.id + ".json");
-        if (!fs::exists(result)) die("the grading run wrote no result for " + m.id);
+    std::size_t finished = 0;
+    run_checks(o, mutants, submissions, checks, [&](std::size_t k, int status) {
+        Mutant& m = mutants[k];
+        // check exits 0 (all pass) or 1 (a test does not pass); anything else is the harness's.
+        const fs::path result = checks / m.id / "results.json";
+        if ((status != 0 && status != 1) || !fs::exists(result))
+            die("the grading run failed on mutant " + m.id + " (status " + std::to_string(status) + "): see " +
+                (checks / (m.id + ".log")).string());
         classify(m, json::parse(slurp(result)), allowed);
-        all.push_back(to_json(m));
-    }
+        std::fprintf(stderr, "  [%zu/%zu] %-14s %-13s %s:%d %s\n", ++finished, mutants.size(), m.id.c_str(),
+                     m.status.c_str(), m.topic.c_str(), m.line, m.function.c_str());
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    json all = json::array();
+    for (const auto& m : mutants) all.push_back(to_json(m));
     const std::string text = report(mutants, seconds, o);
     std::ofstream(out / "mutants.md") << text;
     std::ofstream(out / "mutants.json") << all.dump(1) << "\n";
     std::fputs(text.c_str(), stdout);
-    const auto survivors = std::count_if(mutants.begin(), mutants.end(), [](const Mutant& m) { return m.status == "survived"; });
-    if (survivors) std::fprintf(stderr, "workbook_mutants: %ld mutant(s) survived: a grader misses a wrong answer\n", static_cast<long>(survivors));
+    const auto survivors =
+        std::count_if(mutants.begin(), mutants.end(), [](const Mutant& m) { return m.status == "survived"; });
+    if (survivors)
+        std::fprintf(stderr, "workbook_mutants: %ld mutant(s) survived: a grader misses a wrong answer\n",
+                     static_cast<long>(survivors));
     return survivors ? 1 : 0;
 }
 
 Options parse(int argc, char** argv) {
     Options o;
-    if (argc < 2) die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
+    if (argc < 2)
+        die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
+            "[--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
     o.command = argv[1];
     if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
     for (int i = 2; i < argc; ++i) {
@@ -539,20 +612,32 @@ Options parse(int argc, char** argv) {
             const std::string v = value();
             char* end = nullptr;
             const double x = std::strtod(v.c_str(), &end);
-            if (*end || !(x >= lo)) die(a + " needs a number >= " + std::to_string(static_cast<int>(lo)) + ", not '" + v + "'");
+            if (*end || !(x >= lo))
+                die(a + " needs a number >= " + std::to_string(static_cast<int>(lo)) + ", not '" + v + "'");
             return x;
         };
-        if (a == "--setup") o.setup = value();
-        else if (a == "--solutions") o.solutions = value();
-        else if (a == "--out") o.out = value();
-        else if (a == "--allow") o.allow = value();
-        else if (a == "--topic") o.topics.push_back(value());
-        else if (a == "--sample") o.sample = static_cast<int>(number(1));
-        else if (a == "--seed") o.seed = static_cast<unsigned>(number(0));
-        else if (a == "-j") o.jobs = static_cast<int>(number(1));
-        else if (a == "--timeout") o.timeout = number(1);
-        else if (a == "--build-timeout") o.build_timeout = number(1);
-        else die("unknown option '" + a + "'");
+        if (a == "--setup")
+            o.setup = value();
+        else if (a == "--solutions")
+            o.solutions = value();
+        else if (a == "--out")
+            o.out = value();
+        else if (a == "--allow")
+            o.allow = value();
+        else if (a == "--topic")
+            o.topics.push_back(value());
+        else if (a == "--sample")
+            o.sample = static_cast<int>(number(1));
+        else if (a == "--seed")
+            o.seed = static_cast<unsigned>(number(0));
+        else if (a == "-j")
+            o.jobs = static_cast<int>(number(1));
+        else if (a == "--timeout")
+            o.timeout = number(1);
+        else if (a == "--build-timeout")
+            o.build_timeout = number(1);
+        else
+            die("unknown option '" + a + "'");
     }
     if (o.setup.empty() || o.solutions.empty()) die("--setup and --solutions are required");
     if (o.command == "run" && o.out.empty()) die("run needs --out <folder>");
