@@ -11,10 +11,13 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "figure.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
 #include "common.hpp"
+#include "motion.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -30,6 +33,26 @@ Vec3 omega_fd(const RegularPrecession& p, double t, double h) {
 
 std::vector<double> row(const Vec3& x) { return {x.x(), x.y(), x.z()}; }
 
+// The book's motion viewer: case 2 over two precession periods, with its two cones (a box
+// stands for the body: the kinematics of R(t) do not depend on its moments).
+void write_case_motion(kit::Scene& scene, const std::string& file, const RegularPrecession& p, double err) {
+    if (file.empty()) return;
+    const double Tb = 2 * std::numbers::pi / p.beta;
+    const Vec3 w0 = rigid::precession_lab_angular_velocity(p, 0), W0 = rigid::precession_body_angular_velocity(p, 0);
+    kit::Motion m;
+    m.title = "a regular precession R(t) = R^b(βt) R^a(αt) and its two cones";
+    m.parameters = fmt::format("angle(a, b) = {:.0f}°, α = {:g}, β = {:g}; the body drawn as a box",
+                               std::acos(p.a.dot(p.b)) * 180 / std::numbers::pi, p.alpha, p.beta);
+    m.error = err;
+    m.error_measure = "max |ω (closed form) − ω from finite differences of R(t)| / |ω|";
+    m.moments = {1, 2.2, 2.6};
+    m.shape = "box";
+    m.cones = {{"space cone (about b, fixed in the lab)", p.b, std::acos(p.b.dot(w0) / w0.norm()), false},
+               {"body cone (about a, carried by the body)", p.a, std::acos(p.a.dot(W0) / W0.norm()), true}};
+    for (int k = 0; k <= 400; ++k) m.sample(2 * Tb * k / 400, rigid::precession_rotation(p, 2 * Tb * k / 400));
+    kit::write_motion(scene, file, m);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -38,6 +61,7 @@ int main(int argc, char** argv) {
         double angle, alpha, beta;
     };
     Case given[3] = {{90, 1.0, 1.0}, {35, 2.0, 0.7}, {125, 0.6, 1.5}};
+    std::string motion_file;
     kit::Options opts("precession_cones", "Chapter 2: space and body cones, and a body point's path, for three precessions");
     opts.real("angle1", &given[0].angle, "case 1: angle between a and b (degrees)", kit::between(1, 179))
         .real("alpha1", &given[0].alpha, "case 1: rotation frequency alpha", kit::between(1e-6, 1e6))
@@ -48,8 +72,9 @@ int main(int argc, char** argv) {
         .real("angle3", &given[2].angle, "case 3: angle between a and b (degrees)", kit::between(1, 179))
         .real("alpha3", &given[2].alpha, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
         .real("beta3", &given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
+    opts.file("motion", &motion_file, kit::motion_help);
 
-    return kit::run(argc, argv, opts, [&given](const kit::Options&, kit::Scene& scene) {
+    return kit::run(argc, argv, opts, [&given, &motion_file](const kit::Options&, kit::Scene& scene) {
         const Vec3 b = Vec3::UnitZ();
         std::vector<RegularPrecession> cases;
         for (int c = 1; c <= 3; ++c) {
@@ -144,5 +169,6 @@ int main(int argc, char** argv) {
                            summary);
         scene.report.note("figure: grey = space cone (rays to omega(t)), blue = its rim; light blue = body cone at t* = 0.3 "
                           "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
+        write_case_motion(scene, motion_file, cases[1], summary[1][3]);
     });
 }
