@@ -81,6 +81,7 @@ void write_motion(Scene& scene, const std::string& file, const Motion& m) {
         {"fixed_point", vec(m.fixed_point)},
         {"k", vec(m.k.normalized())},
         {"centre_of_mass", vec(m.centre_of_mass)},
+        {"speed", m.speed},
         {"t", t},
         {"R", R},
         {"trails", {{"centre_of_mass", cm}, {"tip_R_B", tip}}},

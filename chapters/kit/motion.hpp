@@ -13,7 +13,7 @@
 //
 // The file: {"format": "workbook-motion-1", "scene", "title", "parameters", "error",
 // "error_measure", "body": {"shape", "moments", "half_axes"}, "fixed_point", "k",
-// "centre_of_mass" (body frame), "t": [...], "R": [[R00, R01, ..., R22] row by row, ...],
+// "centre_of_mass" (body frame), "speed", "t": [...], "R": [[R00, R01, ..., R22] row by row, ...],
 // "trails": {"centre_of_mass": [[x, y, z], ...], "tip_R_B": [...]}, "cones": [...]}.
 // A relative FILE goes into the scene's --out folder; it is published with the figures, only
 // when the whole scene succeeded.
@@ -52,6 +52,7 @@ struct Motion {
     rigid::Vec3 fixed_point = rigid::Vec3::Zero();
     rigid::Vec3 k = rigid::Vec3::UnitZ();
     std::vector<MotionCone> cones;
+    double speed = 1;  // the viewer's playback at 1x, in units of t per second
     std::vector<double> t;
     std::vector<rigid::Mat3> R;
 

@@ -378,7 +378,7 @@ def selftest(exe, work):
         viewer = f.read()
     broken = {
         "sound": (viewer, None),
-        "frozen": (viewer.replace("this.time + dt * this.speed", "this.time"), r"while playing, two screenshots a second apart are the same"),
+        "frozen": (viewer.replace("this.time + dt * this.speed * this.base", "this.time"), r"while playing, two screenshots a second apart are the same"),
         "unpausable": (viewer.replace("this.playing = false;", "this.playing = true;"), r"paused, two screenshots a second apart differ|did not pause"),
         "scrubber": (viewer.replace("this.seek(t0 + (t1 - t0) * scrub.value / 1000);", ""), r"a click at 3/4 of the scrubber"),
         "blank": (viewer.replace("this.renderer.render(this.scene, this.camera);", ""), r"the canvas is blank"),

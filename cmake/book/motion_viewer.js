@@ -78,6 +78,7 @@
     this.q = data.R.map(quaternion);
     this.time = this.t[0];
     this.playing = true;
+    this.base = data.speed > 0 ? data.speed : 1;  // t per second at 1x, as the scene chose
     this.speed = 1;
     this.frames = 0;
     this.ready = false;
@@ -204,7 +205,8 @@
       this.reset();
       this.seek(t0);
       this.play();
-      this.speed = 1;
+      this.base = data.speed > 0 ? data.speed : 1;  // t per second at 1x, as the scene chose
+    this.speed = 1;
       speed.value = "1";
     });
     // Drag to turn the view about the fixed point.
@@ -280,7 +282,7 @@
   Viewer.prototype.tick = function (dt) {
     if (this.playing) {
       const t0 = this.t[0], t1 = this.t[this.t.length - 1];
-      let next = this.time + dt * this.speed;
+      let next = this.time + dt * this.speed * this.base;
       if (next > t1) next = t0 + ((next - t0) % (t1 - t0));
       this.seek(next);
     }
