@@ -12,12 +12,15 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
 #include "common.hpp"
+#include "motion.hpp"
 #include "scene.hpp"
 
 using rigid::Mat3;
@@ -64,14 +67,48 @@ std::vector<std::vector<double>> rows(const std::vector<Vec3>& v) {
     return r;
 }
 
+// The book's motion viewer: the two senses side by side in one lab (k up), two periods of
+// R(t) = R^b(sigma alpha t) R^a(sigma alpha t) R0, the curves the integration is checked against.
+void write_two_motions(kit::Scene& scene, const std::string& file, const rigid::Moments& m, double f, double err) {
+    if (file.empty()) return;
+    std::vector<kit::Motion> bodies;
+    for (const rigid::Sense sense : {rigid::Sense::ccw, rigid::Sense::cw}) {
+        const rigid::LabPlacement p = rigid::place_item_II(m, f, sense, Vec3::UnitZ(), Vec3::UnitX());
+        const rigid::GrioliPrecession g = rigid::grioli_precession(m, f, sense);
+        const double s = sense == rigid::Sense::ccw ? 1.0 : -1.0, T = 2 * pi / p.alpha;
+        kit::Motion b;
+        b.label = s > 0 ? "left: counter-clockwise, R^b(αt) R^a(αt) R0" : "right: clockwise, R^b(−αt) R^a(−αt) R0";
+        b.title = "the two regular precessions of Theorem 1 in one lab, k up (left counter-clockwise, right clockwise)";
+        b.parameters = fmt::format("A = {:g}, B = {:g}, C = {:g}, f = {:g}; two periods 2π/α", m.A, m.B, m.C, f);
+        b.error = err;
+        b.error_measure = "max distance between the integrated and these exact paths of G and of the tip of R_B";
+        b.moments = {m.A, m.B, m.C};
+        b.size = 0.55;
+        b.centre_of_mass = g.z0;
+        b.fixed_point = Vec3(s > 0 ? -1.7 : 1.7, 0, 0);
+        b.speed = T / 8;
+        for (int i = 0; i <= 400; ++i) {
+            const double t = 2 * T * i / 400;
+            b.sample(t,
+                     rigid::rotation_about(p.b, s * p.alpha * t) * rigid::rotation_about(p.a, s * p.alpha * t) * p.R0);
+        }
+        bodies.push_back(std::move(b));
+    }
+    kit::write_motion(scene, file, bodies);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    kit::Options opts("grioli_paths", "Chapter 5: the two regular precessions (the paper's Figure 4), paths of G and of the tip of R_B");
+    kit::Options opts(
+        "grioli_paths",
+        "Chapter 5: the two regular precessions (the paper's Figure 4), paths of G and of the tip of R_B");
     ch5::moment_options(opts)
         .integer("samples", 240, "points per period", 16, 100000);
+    std::string motion_file;
+    opts.file("motion", &motion_file, kit::motion_help);
 
-    return kit::run(argc, argv, opts, [](const kit::Options& o, kit::Scene& scene) {
+    return kit::run(argc, argv, opts, [&motion_file](const kit::Options& o, kit::Scene& scene) {
         const rigid::Moments m = ch5::moments(o);
         const double f = o.real("f");
         const int samples = static_cast<int>(o.integer("samples"));
@@ -95,6 +132,8 @@ int main(int argc, char** argv) {
         double lowest = 1, highest = -1;
         for (const Vec3& x : ccw.cm_exact) lowest = std::min(lowest, x.z()), highest = std::max(highest, x.z());
         scene.report.add("cm_height_range", std::vector<double>{lowest, highest}, "+- sin(theta): G circles b");
+
+        write_two_motions(scene, motion_file, m, f, err);
 
         kit::Figure fig(scene, "two_precessions.svg", 1000, 600);
         if (!fig.enabled()) return;

@@ -28,10 +28,10 @@ Json vec(const rigid::Vec3& v) { return Json::array({light(v.x()), light(v.y()),
 // on: scaled so that the largest half-axis is 1. Needs the triangle inequality.
 rigid::Vec3 half_axes(const rigid::Vec3& I) {
     const rigid::Vec3 sq(I.y() + I.z() - I.x(), I.z() + I.x() - I.y(), I.x() + I.y() - I.z());
-    if (!(sq.minCoeff() > 0))
+    if (!(sq.minCoeff() >= 0))
         throw BadInput("--motion: the moments (" + std::to_string(I.x()) + ", " + std::to_string(I.y()) + ", " +
                        std::to_string(I.z()) + ") break the triangle inequality: no body has them");
-    const rigid::Vec3 axes = sq.cwiseSqrt();
+    const rigid::Vec3 axes = sq.cwiseSqrt().cwiseMax(0.02 * std::sqrt(sq.maxCoeff()));  // a flat body: a thin plate
     return axes / axes.maxCoeff();
 }
 
@@ -46,23 +46,17 @@ Json cones(const std::vector<MotionCone>& list) {
     return out;
 }
 
-}  // namespace
-
-void write_motion(Scene& scene, const std::string& file, const Motion& m) {
-    if (file.empty()) return;
-    if (fs::path(file).extension() != ".json")
-        throw BadInput("--motion: got '" + file + "'; it must name a .json file");
-    if (m.t.empty() || m.t.size() != m.R.size()) throw NumericalFailure("--motion: no samples of R(t) to write");
-    const rigid::Vec3 axes = half_axes(m.moments);
-    Json t = Json::array(), R = Json::array(), cm = Json::array(), tip = Json::array();
+// One body's part of the file: its shape, placement, samples of R(t), trails and cones.
+Json body_json(const Motion& m) {
+    const rigid::Vec3 axes = half_axes(m.moments) * m.size;
+    Json R = Json::array(), cm = Json::array(), tip = Json::array();
     const bool heavy = m.centre_of_mass.norm() > 0;
-    for (std::size_t i = 0; i < m.t.size(); ++i) {
+    for (std::size_t i = 0; i < m.R.size(); ++i) {
         const rigid::Mat3& r = m.R[i];
         const double drift = (r.transpose() * r - rigid::Mat3::Identity()).norm();
         if (!std::isfinite(drift) || drift > 1e-6 || !(std::abs(r.determinant() - 1) < 1e-6))
             throw NumericalFailure("--motion: R(t) at t = " + std::to_string(m.t[i]) +
                                    " is not a rotation (|R^T R - 1| = " + std::to_string(drift) + ")");
-        t.push_back(light(m.t[i]));
         Json row = Json::array();
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b) row.push_back(light(r(a, b)));
@@ -70,23 +64,46 @@ void write_motion(Scene& scene, const std::string& file, const Motion& m) {
         if (heavy) cm.push_back(vec(m.fixed_point + r * m.centre_of_mass));
         tip.push_back(vec(m.fixed_point + r.col(1) * (1.25 * axes.maxCoeff())));
     }
-    const Json out = {
+    return {{"label", m.label},
+            {"body", {{"shape", m.shape}, {"moments", vec(m.moments)}, {"half_axes", vec(axes)}}},
+            {"fixed_point", vec(m.fixed_point)},
+            {"centre_of_mass", vec(m.centre_of_mass)},
+            {"R", R},
+            {"trails", {{"centre_of_mass", cm}, {"tip_R_B", tip}}},
+            {"cones", cones(m.cones)}};
+}
+
+}  // namespace
+
+void write_motion(Scene& scene, const std::string& file, const Motion& m) {
+    write_motion(scene, file, std::vector<Motion>{m});
+}
+
+void write_motion(Scene& scene, const std::string& file, const std::vector<Motion>& bodies) {
+    if (file.empty()) return;
+    if (fs::path(file).extension() != ".json")
+        throw BadInput("--motion: got '" + file + "'; it must name a .json file");
+    if (bodies.empty()) throw NumericalFailure("--motion: no body to write");
+    const Motion& m = bodies.front();
+    for (const Motion& b : bodies)
+        if (b.t.empty() || b.t.size() != b.R.size() || b.t != m.t)
+            throw NumericalFailure("--motion: every body needs one R for each of the same sample times");
+    Json t = Json::array(), others = Json::array();
+    for (double x : m.t) t.push_back(light(x));
+    for (std::size_t i = 1; i < bodies.size(); ++i) others.push_back(body_json(bodies[i]));
+    Json out = {
         {"format", "workbook-motion-1"},
         {"scene", scene.options().scene()},
         {"title", m.title},
         {"parameters", m.parameters},
         {"error", m.error},
         {"error_measure", m.error_measure},
-        {"body", {{"shape", m.shape}, {"moments", vec(m.moments)}, {"half_axes", vec(axes)}}},
-        {"fixed_point", vec(m.fixed_point)},
         {"k", vec(m.k.normalized())},
-        {"centre_of_mass", vec(m.centre_of_mass)},
         {"speed", m.speed},
         {"t", t},
-        {"R", R},
-        {"trails", {{"centre_of_mass", cm}, {"tip_R_B", tip}}},
-        {"cones", cones(m.cones)},
     };
+    out.update(body_json(m));
+    out["others"] = others;
     const fs::path final_path =
         fs::path(file).is_absolute() ? fs::path(file) : fs::path(scene.options().out_dir()) / file;
     if (!final_path.parent_path().empty()) fs::create_directories(final_path.parent_path());

@@ -13,7 +13,7 @@
 //
 // The file: {"format": "workbook-motion-1", "scene", "title", "parameters", "error",
 // "error_measure", "body": {"shape", "moments", "half_axes"}, "fixed_point", "k",
-// "centre_of_mass" (body frame), "speed", "t": [...], "R": [[R00, R01, ..., R22] row by row, ...],
+// "centre_of_mass" (body frame), "speed", "label", "t": [...], "R": [[R00, R01, ..., R22] row by row, ...],
 // "trails": {"centre_of_mass": [[x, y, z], ...], "tip_R_B": [...]}, "cones": [...]}.
 // A relative FILE goes into the scene's --out folder; it is published with the figures, only
 // when the whole scene succeeded.
@@ -39,6 +39,7 @@ struct MotionCone {
 };
 
 struct Motion {
+    std::string label;       // of this body, when a file holds several ("counter-clockwise")
     std::string title;       // one line: what the reader sees
     std::string parameters;  // "A = 1, B = 2, C = 2.5, ...": the caption's parameters
     double error = 0;        // the scene's error for this motion, and what it measures
@@ -48,6 +49,7 @@ struct Motion {
     // body's largest half-axis is 1) from the fixed point.
     rigid::Vec3 moments{1, 2, 3};
     std::string shape = "ellipsoid";  // or "box"
+    double size = 1;                  // its largest half-axis, in the viewer's units
     rigid::Vec3 centre_of_mass = rigid::Vec3::Zero();
     rigid::Vec3 fixed_point = rigid::Vec3::Zero();
     rigid::Vec3 k = rigid::Vec3::UnitZ();
@@ -70,5 +72,11 @@ inline constexpr const char* motion_help =
 // Writes `m` to `file` (relative: in the --out folder) when `file` is not empty. Throws BadInput
 // for a file name that is not *.json, NumericalFailure for a sample that is not a rotation.
 void write_motion(Scene& scene, const std::string& file, const Motion& m);
+
+// Several bodies in one lab, side by side (each at its own fixed_point), sampled at the same
+// times; the caption (title, parameters, error), k and speed are those of the first. The file
+// holds the first body as above and the others under "others", each with its "label", "body",
+// "fixed_point", "centre_of_mass", "R", "trails" and "cones".
+void write_motion(Scene& scene, const std::string& file, const std::vector<Motion>& bodies);
 
 }  // namespace kit

@@ -75,7 +75,6 @@
     this.figure = figure;
     this.data = data;
     this.t = data.t;
-    this.q = data.R.map(quaternion);
     this.time = this.t[0];
     this.playing = true;
     this.base = data.speed > 0 ? data.speed : 1;  // t per second at 1x, as the scene chose
@@ -109,14 +108,34 @@
     scene.add(sun);
     this.scene = scene;
 
-    const O = vec(d.fixed_point);
-    // The body frame: turned by R(t) about the fixed point.
+    // Each body: its frame turned by R(t) about its fixed point, its trails and cones.
+    this.bodies = [d].concat(d.others || []).map((b) => this.addBody(b, d.k));
+    this.trails = [].concat(...this.bodies.map((b) => b.trails));
+    const reach = Math.max(...this.bodies.map((b) => b.reach));
+    const points = this.bodies.map((b) => vec(b.data.fixed_point));
+    const O = points.reduce((a, p) => a.add(p), new THREE.Vector3()).multiplyScalar(1 / points.length);
+    const spread = Math.max(...points.map((p) => p.distanceTo(O)));
+    const span = Math.max(reach, 1.6);
+    const camera = new THREE.PerspectiveCamera(35, width / height, 0.05, 100);
+    camera.up.set(0, 0, 1);
+    this.camera = camera;
+    this.target = O.clone().add(new THREE.Vector3(0, 0, 0.35 * span));
+    this.distance = 3.6 * span + 0.8 * spread;
+    this.reset();
+    this.controls(stage);
+    this.legend(stage);
+    this.ready = true;
+  };
+
+  // One body of the motion: returns {data, frame, q, trails, reach}.
+  Viewer.prototype.addBody = function (b, k) {
+    const scene = this.scene;
+    const O = vec(b.fixed_point);
     const frame = new THREE.Group();
     frame.position.copy(O);
     scene.add(frame);
-    this.frame = frame;
-    const ax = d.body.half_axes, cm = vec(d.centre_of_mass);
-    const geometry = d.body.shape === "box"
+    const ax = b.body.half_axes, cm = vec(b.centre_of_mass);
+    const geometry = b.body.shape === "box"
       ? new THREE.BoxGeometry(2 * ax[0], 2 * ax[1], 2 * ax[2])
       : new THREE.SphereGeometry(1, 40, 24).scale(ax[0], ax[1], ax[2]);
     const body = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
@@ -124,43 +143,35 @@
     body.position.copy(cm);
     body.add(new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 20), new THREE.LineBasicMaterial({ color: 0x777777 })));
     frame.add(body);
-    const reach = 1.25 * Math.max(ax[0], ax[1], ax[2]);
+    // The principal axes through the fixed point (the body's moments there are A, B, C).
+    const reach = 1.25 * Math.max(ax[0], ax[1], ax[2]) + cm.length();
+    const origin = new THREE.Vector3();
     ["A", "B", "C"].forEach((name, i) => {
       const u = new THREE.Vector3();
       u.setComponent(i, 1);
-      frame.add(new THREE.ArrowHelper(u, cm, reach, COLOURS[name], 0.12, 0.07));
-      frame.add(line([cm.clone(), cm.clone().addScaledVector(u, -reach * 0.8)], COLOURS[name]));
+      frame.add(new THREE.ArrowHelper(u, origin, reach, COLOURS[name], 0.12, 0.07));
+      frame.add(line([origin.clone(), origin.clone().addScaledVector(u, -reach * 0.8)], COLOURS[name]));
     });
-
-    // The lab: fixed point, k, the cones, the trails.
+    if (cm.length() > 0) frame.add(line([origin.clone(), cm.clone()], 0x444444));
     const dot = new THREE.Mesh(new THREE.SphereGeometry(0.05, 16, 12), new THREE.MeshBasicMaterial({ color: 0x000000 }));
     dot.position.copy(O);
     scene.add(dot);
-    scene.add(new THREE.ArrowHelper(vec(d.k).normalize(), O, 1.9, COLOURS.k, 0.14, 0.08));
-    (d.cones || []).forEach((c, i) => {
+    scene.add(new THREE.ArrowHelper(vec(k).normalize(), O, 1.9, COLOURS.k, 0.14, 0.08));
+    (b.cones || []).forEach((c, i) => {
       const m = cone(c.axis, c.half_angle, c.length, COLOURS.cones[i % 2]);
       (c.frame === "body" ? frame : scene).add(m);
+      if (c.frame !== "body") m.position.copy(O);
     });
-    this.trails = [];
+    const trails = [];
     for (const [key, colour] of [["centre_of_mass", COLOURS.cm], ["tip_R_B", COLOURS.tip]]) {
-      const pts = (d.trails[key] || []).map(vec);
+      const pts = (b.trails[key] || []).map(vec);
       if (pts.length < 2) continue;
       const l = line(pts, colour);
       l.geometry.setDrawRange(0, 1);
       scene.add(l);
-      this.trails.push(l);
+      trails.push(l);
     }
-
-    const span = Math.max(reach, 1.6);
-    const camera = new THREE.PerspectiveCamera(35, width / height, 0.05, 100);
-    camera.up.set(0, 0, 1);
-    this.camera = camera;
-    this.target = O.clone().add(new THREE.Vector3(0, 0, 0.35 * span));
-    this.distance = 3.6 * span;
-    this.reset();
-    this.controls(stage);
-    this.legend(stage);
-    this.ready = true;
+    return { data: b, frame, q: b.R.map(quaternion), trails, reach };
   };
 
   Viewer.prototype.reset = function () {
@@ -237,6 +248,7 @@
     if ((d.trails.centre_of_mass || []).length > 1) items.push([COLOURS.cm, "trail of the centre of mass"]);
     if ((d.trails.tip_R_B || []).length > 1) items.push([COLOURS.tip, "trail of the tip of R_B"]);
     items.push([COLOURS.body, "the body: the uniform " + d.body.shape + " with moments A, B, C = " + d.body.moments.join(", ")]);
+    for (const b of [d].concat(d.others || [])) if (b.label && (d.others || []).length) items.push([COLOURS.body, b.label]);
     const list = el("ul", { class: "motion-legend" });
     for (const [colour, text, several] of items) {
       const li = el("li");
@@ -272,7 +284,7 @@
       else hi = mid;
     }
     const s = t[hi] > t[lo] ? (time - t[lo]) / (t[hi] - t[lo]) : 0;
-    this.frame.quaternion.copy(this.q[lo]).slerp(this.q[hi], s);
+    for (const b of this.bodies) b.frame.quaternion.copy(b.q[lo]).slerp(b.q[hi], s);
     for (const l of this.trails) l.geometry.setDrawRange(0, lo + 1);
     this.ui.scrub.value = String(Math.round(1000 * (time - t[0]) / (t[n - 1] - t[0])));
     this.ui.clock.textContent = "t = " + time.toFixed(2);
