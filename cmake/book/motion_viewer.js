@@ -68,6 +68,7 @@
     mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, -1, 0), a);
     const rim = new THREE.LineSegments(new THREE.EdgesGeometry(g, 30), new THREE.LineBasicMaterial({ color: colour }));
     mesh.add(rim);
+    mesh.add(line([new THREE.Vector3(), new THREE.Vector3(0, -1.15 * L, 0)], colour));  // its axis
     return mesh;
   }
 
