@@ -16,7 +16,9 @@
 // "centre_of_mass" (body frame), "speed", "label", "t": [...], "R": [[R00, R01, ..., R22] row by row, ...],
 // "trails": {"centre_of_mass": [[x, y, z], ...], "tip_R_B": [...]}, "cones": [...]}.
 // A relative FILE goes into the scene's --out folder; it is published with the figures, only
-// when the whole scene succeeded.
+// when the whole scene succeeded. Unless --no-figure, the same samples also go to FILE's name
+// with .gif (gnuplot's `gif animate` terminal, 48 frames, under 2 MB): the still-frame fallback
+// that GitHub and print show where the viewer cannot run.
 #pragma once
 
 #include <string>
