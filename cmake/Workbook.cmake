@@ -489,6 +489,8 @@ function(workbook_book)
            COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser")
   add_test(NAME "book: the browser checks fail on a book broken on purpose"
            COMMAND bash "${root}/cmake/book/browser_selftest.sh" "${CMAKE_BINARY_DIR}/test/browser-selftest")
+  add_test(NAME "book: the motion checks fail on a viewer broken on purpose"
+           COMMAND python3 "${root}/cmake/book/browser_motion.py" --selftest "${CMAKE_BINARY_DIR}/test/motion-selftest")
   add_test(NAME "book: the checks fail on a chapter broken on purpose"
            COMMAND ${CMAKE_COMMAND} -DSNIPPETS=$<TARGET_FILE:snippets> -DBOOK=$<TARGET_FILE:book_tool>
                    -DPANDOC=${PANDOC_EXECUTABLE} -DWORK=${CMAKE_BINARY_DIR}/test/book-selftest
@@ -504,6 +506,7 @@ function(workbook_book)
     "book: renders to HTML with MathML, its figures and no broken link"
     "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
     "book: the browser checks fail on a book broken on purpose"
+    "book: the motion checks fail on a viewer broken on purpose"
     "book: the checks fail on a chapter broken on purpose"
     "figures: Greek letters in UTF-8, in a font that has them"
     PROPERTIES LABELS book TIMEOUT 300)
@@ -514,10 +517,12 @@ function(workbook_book)
                        PROPERTIES FIXTURES_SETUP book_html)
   set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
                        PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77)
-  set_tests_properties("book: the browser checks fail on a book broken on purpose" PROPERTIES SKIP_RETURN_CODE 77)
+  set_tests_properties("book: the browser checks fail on a book broken on purpose"
+                       "book: the motion checks fail on a viewer broken on purpose" PROPERTIES SKIP_RETURN_CODE 77)
   # Two browsers at once on two cores time out: one browser test at a time.
   set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-                       "book: the browser checks fail on a book broken on purpose" PROPERTIES RESOURCE_LOCK browser)
+                       "book: the browser checks fail on a book broken on purpose"
+                       "book: the motion checks fail on a viewer broken on purpose" PROPERTIES RESOURCE_LOCK browser)
 
   add_custom_target(update-snippets
     COMMAND snippets --update "${root}" "${runs}"

@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "figure.hpp"
+#include "motion.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
 
@@ -36,16 +40,21 @@ std::vector<std::pair<int, int>> box_edges() {
     return edges;
 }
 
+// The body of the scene: this box, off the axis.
+const Vec3 box_centre(1.3, 0.0, 0.2), box_half(0.35, 0.12, 0.12);
+
 struct Params {
     Vec3 axis = Vec3(0.25, 0.35, 1.0);
     double alpha = 1.0;
     int frames = 5;
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
     opts.vector("axis", &p.axis, "rotation axis a (normalised)", kit::nonzero_vector(-1e6, 1e6))
         .real("alpha", &p.alpha, "rotation frequency alpha", kit::between(1e-6, 1e6))
-        .integer("frames", &p.frames, "instants drawn over one turn", 2, 36);
+        .integer("frames", &p.frames, "instants drawn over one turn", 2, 36)
+        .file("motion", &p.motion_file, kit::motion_help);
     // The work is fixed (361 rotations of 8 corners, 5 times): far below any budget.
 }
 
@@ -62,7 +71,7 @@ constexpr int samples = 360;
 Turn compute(const Params& p) {
     Turn turn{p.axis.normalized(),
               2 * std::numbers::pi / p.alpha,
-              box_corners(Vec3(1.3, 0.0, 0.2), Vec3(0.35, 0.12, 0.12)),
+              box_corners(box_centre, box_half),
               {},
               0};
     turn.path.resize(turn.corners.size());
@@ -80,8 +89,8 @@ Turn compute(const Params& p) {
     return turn;
 }
 
-// Against Eigen's independent AngleAxis, and the circle invariants about a.
-void report(kit::Scene& scene, const Params& p, const Turn& turn) {
+// Against Eigen's independent AngleAxis, and the circle invariants about a. Returns the error.
+double report(kit::Scene& scene, const Params& p, const Turn& turn) {
     const Vec3& a = turn.a;
     double err_eigen = 0, err_height = 0, err_radius = 0;
     for (std::size_t c = 0; c < turn.corners.size(); ++c) {
@@ -104,6 +113,32 @@ void report(kit::Scene& scene, const Params& p, const Turn& turn) {
     scene.report.add("height_drift", err_height, "max |a.x(t) - a.x(0)| / |x|");
     scene.report.add("radius_drift", err_radius, "max change of the distance from the axis / |x|");
     scene.report.add("run_time_per_rotation_s", turn.run_time / (samples + 1));
+    return err_eigen;
+}
+
+// The book's motion viewer: the scene's box over one turn of R^a(alpha t), and the cone that the
+// line from O to its centre sweeps about a.
+void write_turn_motion(kit::Scene& scene, const std::string& file, const Vec3& a, double alpha, double err,
+                       const Vec3& centre, const Vec3& half) {
+    if (file.empty()) return;
+    const double period = 2 * std::numbers::pi / alpha;
+    kit::Motion m;
+    m.title = "a pure rotation R^a(αt): every point of the box circles the axis a";
+    m.parameters = fmt::format("a = ({:.3g}, {:.3g}, {:.3g}), α = {:g}; one turn", a.x(), a.y(), a.z(), alpha);
+    m.error = err;
+    m.error_measure = "max |R^a(αt) x − AngleAxis(αt, a) x| / |x| over the corners of one turn";
+    // The box's moments about its centre, up to its mass: (b² + c², c² + a², a² + b²) / 3.
+    m.moments = Vec3(half.y() * half.y() + half.z() * half.z(), half.z() * half.z() + half.x() * half.x(),
+                     half.x() * half.x() + half.y() * half.y()) /
+                3;
+    m.shape = "box";
+    m.size = half.x();
+    m.centre_of_mass = centre;
+    m.cones = {{"cone swept by the line from O to the box's centre (about a)", a, std::acos(a.dot(centre.normalized())),
+                false, centre.norm()}};
+    m.speed = period / 8;
+    for (int k = 0; k <= 180; ++k) m.sample(period * k / 180, rigid::rotation_about(a, alpha * period * k / 180));
+    kit::write_motion(scene, file, m);
 }
 
 // The edges of the box rotated by R, as separate segments.
@@ -152,7 +187,8 @@ int main(int argc, char** argv) {
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
         const Turn turn = compute(p);
-        report(scene, p, turn);
+        const double error = report(scene, p, turn);
+        write_turn_motion(scene, p.motion_file, turn.a, p.alpha, error, box_centre, box_half);
         draw(scene, p, turn);
     });
 }

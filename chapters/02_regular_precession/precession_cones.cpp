@@ -11,8 +11,11 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common.hpp"
 #include "figure.hpp"
+#include "motion.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
@@ -36,6 +39,7 @@ struct Case {
 };
 struct Params {
     Case given[3] = {{90, 1.0, 1.0}, {35, 2.0, 0.7}, {125, 0.6, 1.5}};
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
@@ -47,7 +51,8 @@ void declare(kit::Options& opts, Params& p) {
         .real("beta2", &p.given[1].beta, "case 2: precession frequency beta", kit::between(1e-6, 1e6))
         .real("angle3", &p.given[2].angle, "case 3: angle between a and b (degrees)", kit::between(1, 179))
         .real("alpha3", &p.given[2].alpha, "case 3: rotation frequency alpha", kit::between(1e-6, 1e6))
-        .real("beta3", &p.given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6));
+        .real("beta3", &p.given[2].beta, "case 3: precession frequency beta", kit::between(1e-6, 1e6))
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 std::vector<RegularPrecession> precessions(const Params& prm) {
@@ -178,6 +183,26 @@ void report(kit::Scene& scene, const std::vector<CaseResult>& results) {
         "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
 }
 
+// The book's motion viewer: case 2 over two precession periods, with its two cones (a box
+// stands for the body: the kinematics of R(t) do not depend on its moments).
+void write_case_motion(kit::Scene& scene, const std::string& file, const RegularPrecession& p, double err) {
+    if (file.empty()) return;
+    const double Tb = 2 * std::numbers::pi / p.beta;
+    const Vec3 w0 = rigid::precession_lab_angular_velocity(p, 0), W0 = rigid::precession_body_angular_velocity(p, 0);
+    kit::Motion m;
+    m.title = "a regular precession R(t) = R^b(βt) R^a(αt) and its two cones";
+    m.parameters = fmt::format("angle(a, b) = {:.0f}°, α = {:g}, β = {:g}; the body drawn as a box",
+                               std::acos(p.a.dot(p.b)) * 180 / std::numbers::pi, p.alpha, p.beta);
+    m.error = err;
+    m.error_measure = "max |ω (closed form) − ω from finite differences of R(t)| / |ω|";
+    m.moments = {1, 2.2, 2.6};
+    m.shape = "box";
+    m.cones = {{"space cone (about b, fixed in the lab)", p.b, std::acos(p.b.dot(w0) / w0.norm()), false},
+               {"body cone (about a, carried by the body)", p.a, std::acos(p.a.dot(W0) / W0.norm()), true}};
+    for (int k = 0; k <= 400; ++k) m.sample(2 * Tb * k / 400, rigid::precession_rotation(p, 2 * Tb * k / 400));
+    kit::write_motion(scene, file, m);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -191,5 +216,6 @@ int main(int argc, char** argv) {
         for (const RegularPrecession& p : cases) results.push_back(compute(p));
         draw(scene, cases, results);
         report(scene, results);
+        write_case_motion(scene, prm.motion_file, cases[1], results[1].row[3]);
     });
 }

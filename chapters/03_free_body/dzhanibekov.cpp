@@ -18,6 +18,7 @@
 #include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
+#include "motion.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/require.hpp"
 #include "scene.hpp"
@@ -236,18 +237,41 @@ void draw_error(kit::Scene& scene, const Setup& u, const Flip& f) {
     fe.finish();
 }
 
+// The book's motion viewer: the exact motion of the flip, R(t) over [0, T], the body drawn as
+// the box with its moments.
+void write_flip_motion(kit::Scene& scene, const std::string& file, const Setup& u, const Flip& f) {
+    if (file.empty()) return;
+    kit::Motion m;
+    m.title = "the Dzhanibekov flip: a spin about the middle axis R_B, perturbed by δ (exact motion)";
+    m.parameters = "I = (" + short_number(u.p.I(0)) + ", " + short_number(u.p.I(1)) + ", " + short_number(u.p.I(2)) +
+                   "), spin " + short_number(u.p.spin) + ", δ = " + short_number(u.p.delta) + ", t from 0 to " +
+                   short_number(u.p.T);
+    m.error = f.e8;
+    m.error_measure = "max |Ω_rk8pd − Ω_exact| / |Ω(0)|: an independent integration against the motion shown";
+    m.moments = u.p.I;
+    m.shape = "box";
+    m.speed = 0.25;
+    const auto times = rigid::linspace(0, u.p.T, 800);
+    const auto R = rigid::free_body_exact_rotations(f.exact, times);
+    for (std::size_t k = 0; k < times.size(); ++k) m.sample(times[k], R[k]);
+    kit::write_motion(scene, file, m);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     Params p;
+    std::string motion_file;
     kit::Options opts("dzhanibekov", "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
     declare(opts, p);
-    return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
+    opts.file("motion", &motion_file, kit::motion_help);
+    return kit::run(argc, argv, opts, [&p, &motion_file](const kit::Options& o, kit::Scene& scene) {
         const Setup u = setup(o, p);
         const Flip f = flip(u);
         report_flip(scene.report, f);
         report_approach(scene.report, u);
         draw_flip(scene, f);
         draw_error(scene, u, f);
+        write_flip_motion(scene, motion_file, u, f);
     });
 }

@@ -12,11 +12,14 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
+#include "motion.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
 
@@ -68,10 +71,13 @@ std::vector<std::vector<double>> rows(const std::vector<Vec3>& v) {
 struct Params {
     ch5::Body body;
     int samples = 240;
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body).integer("samples", &p.samples, "points per period", 16, 100000);
+    ch5::moment_options(opts, p.body)
+        .integer("samples", &p.samples, "points per period", 16, 100000)
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 // The two precessions' paths, and the counter-clockwise one's placement in the lab.
@@ -96,7 +102,8 @@ Both compute(const kit::Options& o, const Params& prm) {
     return r;
 }
 
-void report(kit::Scene& scene, const Both& r) {
+// Returns the error it reports.
+double report(kit::Scene& scene, const Both& r) {
     double err = 0;
     for (const Paths* P : {&r.ccw, &r.cw})
         for (std::size_t i = 0; i < P->cm.size(); ++i)
@@ -110,6 +117,7 @@ void report(kit::Scene& scene, const Both& r) {
     double lowest = 1, highest = -1;
     for (const Vec3& x : r.ccw.cm_exact) lowest = std::min(lowest, x.z()), highest = std::max(highest, x.z());
     scene.report.add("cm_height_range", std::vector<double>{lowest, highest}, "+- sin(theta): G circles b");
+    return err;
 }
 
 std::string xyz(const Vec3& v) {
@@ -165,6 +173,36 @@ void draw(kit::Scene& scene, const Both& r) {
     fig.finish();
 }
 
+// The book's motion viewer: the two senses side by side in one lab (k up), two periods of
+// R(t) = R^b(sigma alpha t) R^a(sigma alpha t) R0, the curves the integration is checked against.
+void write_two_motions(kit::Scene& scene, const std::string& file, const rigid::Moments& m, double f, double err) {
+    if (file.empty()) return;
+    std::vector<kit::Motion> bodies;
+    for (const rigid::Sense sense : {rigid::Sense::ccw, rigid::Sense::cw}) {
+        const rigid::LabPlacement p = rigid::place_item_II(m, f, sense, Vec3::UnitZ(), Vec3::UnitX());
+        const rigid::GrioliPrecession g = rigid::grioli_precession(m, f, sense);
+        const double s = sense == rigid::Sense::ccw ? 1.0 : -1.0, T = 2 * pi / p.alpha;
+        kit::Motion b;
+        b.label = s > 0 ? "left: counter-clockwise, R^b(αt) R^a(αt) R0" : "right: clockwise, R^b(−αt) R^a(−αt) R0";
+        b.title = "the two regular precessions of Theorem 1 in one lab, k up (left counter-clockwise, right clockwise)";
+        b.parameters = fmt::format("A = {:g}, B = {:g}, C = {:g}, f = {:g}; two periods 2π/α", m.A, m.B, m.C, f);
+        b.error = err;
+        b.error_measure = "max distance between the integrated and these exact paths of G and of the tip of R_B";
+        b.moments = {m.A, m.B, m.C};
+        b.size = 0.55;
+        b.centre_of_mass = g.z0;
+        b.fixed_point = Vec3(s > 0 ? -1.7 : 1.7, 0, 0);
+        b.speed = T / 8;
+        for (int i = 0; i <= 400; ++i) {
+            const double t = 2 * T * i / 400;
+            b.sample(t,
+                     rigid::rotation_about(p.b, s * p.alpha * t) * rigid::rotation_about(p.a, s * p.alpha * t) * p.R0);
+        }
+        bodies.push_back(std::move(b));
+    }
+    kit::write_motion(scene, file, bodies);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,7 +213,8 @@ int main(int argc, char** argv) {
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
         const Both r = compute(o, p);
-        report(scene, r);
+        const double err = report(scene, r);
+        write_two_motions(scene, p.motion_file, ch5::moments(p.body.moments), p.body.f, err);
         draw(scene, r);
     });
 }

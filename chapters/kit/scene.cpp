@@ -257,6 +257,19 @@ Options& Options::choice(const std::string& name, std::string* field, const std:
     return *this;
 }
 
+Options& Options::file(const std::string& name, std::string* field, const std::string& help) {
+    Spec& s = add(name);
+    s.kind = "file";
+    s.help = help;
+    s.rule_text = "a file name";
+    s.shown_default = "none";
+    s.set = [field, name](const std::string& value) {
+        if (value.empty()) throw BadInput("--" + name + ": needs a file name");
+        *field = value;
+    };
+    return *this;
+}
+
 std::string Options::option_names() const {
     std::vector<std::string> names;
     for (const auto& s : specs_) names.push_back("--" + s.name);
@@ -356,7 +369,9 @@ void Options::print_option_list(std::ostream& os) const {
     Json options = Json::array();
     for (const Spec& s : specs_) {
         Json o = {{"name", s.name}, {"kind", s.kind}, {"default", s.shown_default}};
-        if (s.kind == "word") {
+        if (s.kind == "file") {
+            // a file name has no range: the corner sweep leaves it alone
+        } else if (s.kind == "word") {
             o["choices"] = s.choices;
         } else {
             // The bounds as the option reads them back: whole numbers for an integer option.

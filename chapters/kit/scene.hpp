@@ -88,6 +88,8 @@ public:
     Options& vector(const std::string& name, rigid::Vec3* field, const std::string& help, VecRule rule);
     Options& choice(const std::string& name, std::string* field, const std::vector<std::string>& choices,
                     const std::string& help);
+    // A file name (kind "file"; empty by default), e.g. --motion FILE (motion.hpp).
+    Options& file(const std::string& name, std::string* field, const std::string& help);
 
     // Reads argv; throws BadInput naming the option and the rule. Returns false after --help.
     bool parse(int argc, char** argv);

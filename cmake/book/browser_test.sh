@@ -4,7 +4,8 @@
 # nothing is wider than the content column or hides part of itself (cmake/book/browser_check.js);
 # then it takes a full-page screenshot (the whole height of the page, 1200 px wide) of each
 # chapter and of the other pages of prose into <book>/screenshots/ (a build artefact: look at
-# them), and checks that each is as tall as its page.
+# them), and checks that each is as tall as its page; then the motion viewers, in
+# cmake/book/browser_motion.py.
 #
 #   cmake/book/browser_test.sh <book folder> <scratch folder>
 #
@@ -117,4 +118,11 @@ while IFS=$'\t' read -r file kind _title; do
     echo "screenshot: $png ($(png_height "$png") px, the whole page)"
   fi
 done <"$book/pages.txt"
+
+# The motion viewers (cmake/book/browser_motion.py): each page with one, driven over the DevTools
+# protocol: no console error, a canvas that is not blank, that moves while playing and holds
+# still when paused, a scrubber that moves the body; a screenshot of each viewer.
+if grep -lq 'class="motion"' "$book"/*.html 2>/dev/null; then
+  python3 "$here/browser_motion.py" "$book" "$work/motion" || status=1
+fi
 exit $status

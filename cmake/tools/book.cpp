@@ -31,6 +31,7 @@
 // [P]", and at least three <details> blocks whose <summary> starts with "Predict:", each naming a
 // command to run. Every row of chapters/errata.md names a chapter and gives numbers.
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdio>
 #include <ctime>
@@ -511,6 +512,7 @@ private:
     std::string preprocess(const Page& page);
     std::string figure_html(const Page& page, const std::smatch& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
+    std::string motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion);
     std::string rewrite_links(const Page& page, const std::string& html);
     void render_markdown(const Page& page, const Page* prev, const Page* next);
     void render_code(const Page& page);
@@ -519,6 +521,7 @@ private:
     void prepare_out();
     void render_pages(std::size_t reading_order);
     void check_fragments();
+    void copy_viewer();
     int summary(int chapters);
 
     fs::path root_;
@@ -536,7 +539,7 @@ private:
     std::vector<std::string> index_lines(const std::vector<std::string>& contents);
     bool own_run() const { return fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures"); }
     int values_shown_ = 0, values_committed_ = 0, values_unmeasured_ = 0, figures_copied_ = 0;
-    int page_values_ = 0, page_committed_ = 0, page_unmeasured_ = 0;
+    int page_values_ = 0, page_committed_ = 0, page_unmeasured_ = 0, page_motions_ = 0, motions_ = 0;
     std::map<std::string, int> unmeasured_by_scene_;  // runs without a report: values shown as committed
     std::map<std::string, int> committed_by_scene_;   // runs this build did not make: committed reports
 };
@@ -635,6 +638,41 @@ std::string Book::figure_html(const Page& page, const std::smatch& m, int figure
            whose + "</figcaption>\n</figure>\n";
 }
 
+// A motion for the viewer (cmake/book/motion_viewer.js): the JSON a scene wrote with --motion FILE,
+// from this build's figures, else the committed ones (like a figure), put into the page with its
+// caption (the scene, its parameters, its error) and its still picture for a reader without
+// WebGL (the image line that follows the marker in the prose; GitHub shows only that).
+std::string Book::motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion) {
+    const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(motion)
+                                            : std::to_string(motion);
+    const std::string key = rel((page.source.parent_path() / path).lexically_normal(), root_);
+    if (key.rfind("figures/", 0) != 0 || fs::path(key).extension() != ".json")
+        throw std::runtime_error("a motion is a scene's JSON under figures/, not " + key);
+    const fs::path built = figures_ / key.substr(8), committed = root_ / key;
+    const fs::path from = fs::exists(built) ? built : committed;
+    if (!fs::exists(from)) throw std::runtime_error("the motion " + key + " does not exist (run: cmake/workbook run)");
+    if (from != built) notes_.push_back(key + ": not written by this build, the committed motion is shown");
+    const auto data = prose::read_json(from);
+    for (const char* field : {"scene", "title", "parameters", "error", "error_measure", "t", "R", "body"})
+        if (!data.contains(field)) throw std::runtime_error("the motion " + key + " has no '" + field + "'");
+    if (!data["error"].is_number() || !std::isfinite(data["error"].get<double>()))
+        throw std::runtime_error("the motion " + key + " reports no error (not measured)");
+    std::string json = data.dump();  // a script's text ends at "</": write it "<\/"
+    for (std::size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
+    ++page_motions_, ++motions_;
+    std::string html = "<figure class=\"motion\" id=\"motion-" + number + "\">\n";
+    if (!fallback.empty()) html += "<img class=\"motion-fallback\" src=\"" + html_escape(fallback) + "\" alt=\"" +
+                                   html_escape(data["title"].get<std::string>()) + "\">\n";
+    html += "<script type=\"application/json\" class=\"motion-data\">" + json + "</script>\n";
+    html += "<figcaption><strong>Motion " + number + ".</strong> " + html_escape(data["title"].get<std::string>()) +
+            ". Scene <code>" + html_escape(data["scene"].get<std::string>()) + "</code>: " +
+            html_escape(data["parameters"].get<std::string>()) + "; error " +
+            html_escape(prose::sci(data["error"].get<double>(), 2)) + " (" +
+            html_escape(data["error_measure"].get<std::string>()) + ").";
+    if (from != built) html += " <em>(The committed motion: this build has not written it.)</em>";
+    return html + "</figcaption>\n</figure>\n";
+}
+
 // A value, from this build's report of its run, else from the committed report of the same run,
 // else the text committed with the prose, marked as not measured. Throws what is wrong.
 std::string Book::value_html(const prose::ValueMarker& v) {
@@ -683,12 +721,13 @@ std::string Book::value_html(const prose::ValueMarker& v) {
 
 std::string Book::preprocess(const Page& page) {
     auto lines = prose::read_lines(page.source);
-    page_values_ = page_committed_ = page_unmeasured_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
     const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
+    const std::regex motion_marker(R"(^<!-- motion: (\S+) -->\s*$)");
     std::string md;
     bool in_fence = false;
-    int figure = 0;
+    int figure = 0, motion = 0;
     const std::string where0 = rel(page.source, root_);
     for (std::size_t i = 0; i < lines.size(); ++i) {
         std::string line = lines[i];
@@ -711,6 +750,17 @@ std::string Book::preprocess(const Page& page) {
             continue;
         }
         if (std::regex_match(line, prose::snippet_use_end())) continue;
+        if (std::regex_match(line, m, motion_marker)) {  // the still picture for GitHub follows it
+            const std::string path = m[1];
+            std::string fallback;
+            if (i + 1 < lines.size() && std::regex_match(lines[i + 1], m, image)) fallback = m[2], ++i;
+            try {
+                md += motion_html(page, path, fallback, ++motion);
+            } catch (const std::exception& e) {
+                problems_.push_back(where + ": " + e.what());
+            }
+            continue;
+        }
         if (std::regex_match(line, m, image)) {
             md += figure_html(page, m, ++figure);
             continue;
@@ -821,7 +871,8 @@ std::string Book::pandoc_command(const Page& page, const fs::path& in, const fs:
                       " --variable=source:" + shell_quote(html_escape(rel(page.source, root_))) +
                       (page_values_ ? " --variable=label:" + shell_quote(html_escape(label_)) : std::string()) +
                       (page_committed_ ? " --variable=committed:yes" : std::string()) +
-                      (page_unmeasured_ ? " --variable=unmeasured:yes" : std::string());
+                      (page_unmeasured_ ? " --variable=unmeasured:yes" : std::string()) +
+                      (page_motions_ ? " --variable=motion:yes" : std::string());
     if (page.kind == "chapter") cmd += " --toc --toc-depth=3";
     return cmd + " --output=" + shell_quote(out.string()) + " " + shell_quote(in.string());
 }
@@ -850,7 +901,7 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
 }
 
 void Book::render_code(const Page& page) {
-    page_values_ = page_committed_ = page_unmeasured_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
     const std::string text = prose::read_text(page.source);
     std::size_t longest = 2, run_len = 0;
     for (char c : text) {
@@ -912,6 +963,21 @@ void Book::prepare_out() {
     fs::copy_file(root_ / "cmake" / "book" / "book.css", out_ / "book.css", fs::copy_options::overwrite_existing);
 }
 
+// The motion viewer of the pages that show a motion: its script, and three.js from Debian's
+// libjs-three (r111), copied into the book so that it works offline.
+void Book::copy_viewer() {
+    if (!motions_) return;
+    const fs::path three = "/usr/share/javascript/three/three.min.js";
+    if (!fs::exists(three)) {
+        problems_.push_back(std::to_string(motions_) + " motion(s) need three.js: " + three.string() +
+                            " is missing (Debian: sudo apt-get install libjs-three; cmake/workbook installs it)");
+        return;
+    }
+    fs::copy_file(three, out_ / "three.min.js", fs::copy_options::overwrite_existing);
+    fs::copy_file(root_ / "cmake" / "book" / "motion_viewer.js", out_ / "motion_viewer.js",
+                  fs::copy_options::overwrite_existing);
+}
+
 // Every page; pages found through links are appended while we go.
 void Book::render_pages(std::size_t reading_order) {
     for (std::size_t i = 0; i < pages_.size(); ++i) {
@@ -958,7 +1024,7 @@ int Book::summary(int chapters) {
     prose::write_text(out_ / "pages.txt", list);
     fs::remove_all(out_ / ".work");
     std::cout << "book: " << pages_.size() << " pages (" << chapters << " chapters), " << figures_copied_ << " figures, "
-              << values_shown_ << " values from " << (own_run() ? figures_.string() : "the committed reports");
+              << motions_ << " motions, " << values_shown_ << " values from " << (own_run() ? figures_.string() : "the committed reports");
     if (values_committed_) std::cout << ", " << values_committed_ << " from the committed reports";
     if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured";
     std::cout << "\n      " << (out_ / "index.html").string() << "\n";
@@ -983,6 +1049,7 @@ int Book::render() {
     prepare_out();
     render_pages(reading_order);
     check_fragments();
+    copy_viewer();
     return summary(chapters);
 }
 
