@@ -369,9 +369,11 @@ private:
             return;
         }
         std::string text = prose::read_text(src->second);
-        for (const auto& dir : {fs::path(src->second).parent_path(), root_ / "chapters" / "kit"})
+        for (const fs::path& dir : {fs::path(src->second).parent_path(), root_ / "chapters" / "kit"}) {
+            if (!fs::is_directory(dir)) continue;  // a workbook without a scene kit
             for (const auto& e : fs::directory_iterator(dir))
                 if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
+        }
         std::istringstream args(args_text);
         for (std::string a; args >> a;) {
             if (a.rfind("--", 0) != 0) continue;
