@@ -513,6 +513,8 @@ private:
     std::string figure_html(const Page& page, const std::smatch& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
     std::string motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion);
+    std::string motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
+                             const std::string& path, int motion, const std::string& where);
     std::string rewrite_links(const Page& page, const std::string& html);
     void render_markdown(const Page& page, const Page* prev, const Page* next);
     void render_code(const Page& page);
@@ -673,6 +675,22 @@ std::string Book::motion_html(const Page& page, const std::string& path, const s
     return html + "</figcaption>\n</figure>\n";
 }
 
+// A motion marker at lines[i], and the image line after it (the GIF that GitHub shows), which it
+// takes as the viewer's still picture.
+std::string Book::motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
+                               const std::string& path, int motion, const std::string& where) {
+    static const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
+    std::smatch m;
+    std::string fallback;
+    if (i + 1 < lines.size() && std::regex_match(lines[i + 1], m, image)) fallback = m[2], ++i;
+    try {
+        return motion_html(page, path, fallback, motion);
+    } catch (const std::exception& e) {
+        problems_.push_back(where + ": " + e.what());
+        return "";
+    }
+}
+
 // A value, from this build's report of its run, else from the committed report of the same run,
 // else the text committed with the prose, marked as not measured. Throws what is wrong.
 std::string Book::value_html(const prose::ValueMarker& v) {
@@ -750,15 +768,8 @@ std::string Book::preprocess(const Page& page) {
             continue;
         }
         if (std::regex_match(line, prose::snippet_use_end())) continue;
-        if (std::regex_match(line, m, motion_marker)) {  // the still picture for GitHub follows it
-            const std::string path = m[1];
-            std::string fallback;
-            if (i + 1 < lines.size() && std::regex_match(lines[i + 1], m, image)) fallback = m[2], ++i;
-            try {
-                md += motion_html(page, path, fallback, ++motion);
-            } catch (const std::exception& e) {
-                problems_.push_back(where + ": " + e.what());
-            }
+        if (std::regex_match(line, m, motion_marker)) {
+            md += motion_block(page, lines, i, m[1], ++motion, where);
             continue;
         }
         if (std::regex_match(line, m, image)) {
