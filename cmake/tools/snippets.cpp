@@ -320,8 +320,9 @@ int check_names(const fs::path& root) {
                         // the scene kit (a chapter may declare shared options in a common
                         // header; the body's moments --A --B --C are declared in kit/body.hpp).
                         std::string text = prose::read_text(src->second);
+                        std::error_code ignored;  // a tree without chapters/kit (the book's self-test)
                         for (const auto& dir : {fs::path(src->second).parent_path(), root / "chapters" / "kit"})
-                            for (const auto& e : fs::directory_iterator(dir))
+                            for (const auto& e : fs::directory_iterator(dir, fs::directory_options::none, ignored))
                                 if (e.path().extension() == ".hpp") text += prose::read_text(e.path());
                         std::istringstream args(m[2].str());
                         for (std::string a; args >> a;) {
