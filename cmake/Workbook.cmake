@@ -704,8 +704,8 @@ function(workbook_grading)
 endfunction()
 
 # ------------------------------------------------------------------------------------------
-# Short functions in the workbook's own tools (cmake/tools/, tests/grading/): none over
-# WORKBOOK_FUNCTION_LINES lines, by clang-tidy's readability-function-size (cmake/function_size.cmake;
+# Short functions in the workbook's own tools (cmake/tools/, tests/grading/) and short scene mains
+# (chapters/*/*.cpp): none over WORKBOOK_FUNCTION_LINES lines, by clang-tidy's readability-function-size (cmake/function_size.cmake;
 # Debian's clang-tidy, which cmake/workbook test installs). A second test proves the check can fail.
 set(WORKBOOK_FUNCTION_LINES 60 CACHE STRING "The longest function allowed in cmake/tools and tests/grading")
 function(workbook_function_size)
@@ -715,7 +715,7 @@ function(workbook_function_size)
     set(tidy "")
   endif()
   set(script "${WORKBOOK_ROOT}/cmake/function_size.cmake")
-  set(check "code: no function in cmake/tools or tests/grading is over ${WORKBOOK_FUNCTION_LINES} lines")
+  set(check "code: no function in cmake/tools or tests/grading, and no scene main, is over ${WORKBOOK_FUNCTION_LINES} lines")
   set(selftest "code: the function-size check flags a function one line too long")
   add_test(NAME "${check}"
            COMMAND ${CMAKE_COMMAND} -DTIDY=${tidy} -DROOT=${WORKBOOK_ROOT} -DBUILD=${CMAKE_BINARY_DIR}

@@ -1,6 +1,8 @@
 # Short functions in the workbook's own tools: no function in cmake/tools/ or tests/grading/ (the
 # book tool, the snippet checker, the grading run and its record and replay) is longer than LINES
-# lines, by clang-tidy's readability-function-size (its LineThreshold counts the lines of the body).
+# lines, by clang-tidy's readability-function-size (its LineThreshold counts the lines of the body);
+# and no scene's main (chapters/*/*.cpp) is either: a scene reads as named steps (parse, compute,
+# report, draw), each a function of its own.
 #
 #   cmake -DTIDY=<clang-tidy> -DROOT=<workbook> -DBUILD=<build folder> -DLINES=<n> -P cmake/function_size.cmake
 #       checks the sources as the build compiles them (BUILD/compile_commands.json);
@@ -79,6 +81,15 @@ if(found)
 endif()
 list(LENGTH files n)
 list(JOIN known_long "\n  " listed)
+# The scenes: only main is held to the limit (a scene's steps are its other functions).
+file(GLOB scenes "${ROOT}/chapters/*/*.cpp")
+set(TIDY_EXTRA -p "${BUILD}" "--header-filter=^$")
+long_functions(scene_long ${scenes})
+list(FILTER scene_long INCLUDE REGEX ": (function 'main'|clang-tidy failed)")
+list(TRANSFORM scene_long REPLACE "^${ROOT}/" "")
+list(APPEND new_long ${scene_long})
+list(LENGTH scenes n_scenes)
+
 if(new_long OR now_short)
   list(JOIN new_long "\n  " lines)
   list(JOIN now_short "\n  " short)
@@ -88,7 +99,9 @@ if(new_long OR now_short)
 endif()
 if(known_long)
   message(STATUS "${n} sources of cmake/tools and tests/grading: no function over ${LINES} lines but the "
-                 "ones listed in cmake/function_size.cmake:\n  ${listed}")
+                 "ones listed in cmake/function_size.cmake:\n  ${listed}\n"
+                 "${n_scenes} sources of chapters/: no main over ${LINES} lines")
 else()
-  message(STATUS "${n} sources of cmake/tools and tests/grading: no function over ${LINES} lines")
+  message(STATUS "${n} sources of cmake/tools and tests/grading: no function over ${LINES} lines; "
+                 "${n_scenes} sources of chapters/: no main over ${LINES} lines")
 endif()

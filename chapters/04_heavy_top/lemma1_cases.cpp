@@ -14,6 +14,7 @@
 
 #include "body.hpp"
 #include "figure.hpp"
+#include "precession.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
@@ -37,9 +38,9 @@ Lemma1Frame to_lemma1_frame(const rigid::PrecessionFit& fit) {
     const Vec3 b = p.b, k = fit.top.k, a_perp = p.a - p.a.dot(b) * b;
     const double phi = std::atan2(-a_perp.dot(b.cross(k)), b.cross(a_perp).dot(b.cross(k)));  // beta t0
     const double t0 = phi / p.beta;
-    const Mat3 R0 = rigid::rotation_about(b, p.beta * t0) * rigid::rotation_about(p.a, p.alpha * t0);
-    const Vec3 a0 = R0 * p.a;  // = R^b(beta t0) a
-    Mat3 P;                    // columns e1, e2, e3 of the new lab frame
+    const Mat3 R0 = kit::precession_rotation(p, t0);  // b = p.b
+    const Vec3 a0 = R0 * p.a;                         // = R^b(beta t0) a
+    Mat3 P;                                           // columns e1, e2, e3 of the new lab frame
     P.col(2) = a0;
     P.col(1) = (b - b.dot(a0) * a0).normalized();
     P.col(0) = P.col(1).cross(P.col(2));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -219,9 +220,7 @@ double affirmation_5(kit::Report& report, const Setup& u) {
                "max change of a, k, theta (and of alpha / sqrt f) for f = 1e-6, 1e6");
     // In the lab of the placements above: R^b(alpha t) R^a(alpha t) R0, for four bodies.
     auto claim = [&](const Vec3& rot, const Mat3& R0) {
-        return [&, rot, R0](double t) {
-            return Mat3(rigid::rotation_about(b, g.alpha * t) * rigid::rotation_about(rot, g.alpha * t) * R0);
-        };
+        return [&, rot, R0](double t) { return Mat3(kit::precession_rotation({rot, g.alpha, b, g.alpha}, t) * R0); };
     };
     auto omega0 = [&](const Vec3& rot, const Mat3& R0) { return Vec3(g.alpha * R0.transpose() * (rot + b)); };
     const Mat3 Rpp = placed(u, 1, 1), Rpm = placed(u, 1, -1), Rmm = placed(u, -1, -1);

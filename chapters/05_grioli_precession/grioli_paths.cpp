@@ -16,6 +16,7 @@
 
 #include "common.hpp"
 #include "figure.hpp"
+#include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -50,8 +51,7 @@ Paths paths(const rigid::Moments& m, double f, rigid::Sense sense, int samples) 
         rigid::pack(rigid::grioli_initial_state(g)), rigid::linspace(0, T, samples),
         [&](double t, const VecX& y) {
             const Mat3 R_lab = p.R0 * rigid::unpack(y).R;  // body -> inertia frame at 0 -> lab
-            const Mat3 R_exact =
-                rigid::rotation_about(p.b, s * p.alpha * t) * rigid::rotation_about(p.a, s * p.alpha * t) * p.R0;
+            const Mat3 R_exact = kit::precession_rotation({p.a, s * p.alpha, p.b, s * p.alpha}, t) * p.R0;
             out.cm.push_back(R_lab * g.z0);
             out.tip.push_back(R_lab * Vec3::UnitY());
             out.cm_exact.push_back(R_exact * g.z0);

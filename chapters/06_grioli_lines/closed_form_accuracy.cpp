@@ -119,20 +119,10 @@ std::vector<std::vector<double>> symmetric_sweep(double mu, double& worst_stable
 std::pair<double, double> run_times(const BodyAtG& b) {
     const double ell = size_of(b);
     const Vec3 z = rigid::grioli_direction(b, sign);
-    const double t_closed = kit::min_time([&] {
-                                double s = 0;
-                                for (int i = 0; i < 1000; ++i)
-                                    s += rigid::shifted_moments(b, ell * (1 + 1e-3 * i), z).A;
-                                kit::keep(s);
-                            }) /
-                            1000;
-    const double t_eigen = kit::min_time([&] {
-                               double s = 0;
-                               for (int i = 0; i < 1000; ++i)
-                                   s += eigen_moments(tensor_at(b, ell * (1 + 1e-3 * i), z)).A;
-                               kit::keep(s);
-                           }) /
-                           1000;
+    const double t_closed =
+        kit::time_per_call([&](int i) { return rigid::shifted_moments(b, ell * (1 + 1e-3 * i), z).A; });
+    const double t_eigen =
+        kit::time_per_call([&](int i) { return eigen_moments(tensor_at(b, ell * (1 + 1e-3 * i), z)).A; });
     return {t_closed, t_eigen};
 }
 

@@ -103,20 +103,10 @@ Curves compute(const BodyAtG& b, const std::vector<Line>& lines, int n) {
 
 // The run time of one closed-form evaluation and of one eigen-solver call, on the line z_b.
 std::pair<double, double> run_times(const BodyAtG& b, const Vec3& z_b, double L_probe) {
-    const double t_closed = kit::min_time([&] {
-                                double s = 0;
-                                for (int i = 0; i < 1000; ++i)
-                                    s += rigid::shifted_moments(b, L_probe * (1 + 1e-4 * i), z_b).C_minus_B;
-                                kit::keep(s);
-                            }) /
-                            1000;
-    const double t_eigen = kit::min_time([&] {
-                               double s = 0;
-                               for (int i = 0; i < 1000; ++i)
-                                   s += eigen_moments(tensor_at(b, L_probe * (1 + 1e-4 * i), z_b)).C;
-                               kit::keep(s);
-                           }) /
-                           1000;
+    const double t_closed =
+        kit::time_per_call([&](int i) { return rigid::shifted_moments(b, L_probe * (1 + 1e-4 * i), z_b).C_minus_B; });
+    const double t_eigen =
+        kit::time_per_call([&](int i) { return eigen_moments(tensor_at(b, L_probe * (1 + 1e-4 * i), z_b)).C; });
     return {t_closed, t_eigen};
 }
 

@@ -12,6 +12,7 @@
 
 #include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
+#include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -41,8 +42,7 @@ double off_frequency_deviation(const rigid::Moments& m, double f, double lambda,
         [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); },
         rigid::pack(s0), rigid::linspace(0, T, static_cast<int>(32 * periods)),
         [&](double t, const VecX& y) {
-            const Mat3 exact =
-                rigid::rotation_about(g.b, lambda * g.alpha * t) * rigid::rotation_about(g.a, lambda * g.alpha * t);
+            const Mat3 exact = kit::precession_rotation({g.a, lambda * g.alpha, g.b, lambda * g.alpha}, t);
             worst = std::max(worst, rigid::geodesic_angle(rigid::unpack(y).R, exact));
         },
         {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
