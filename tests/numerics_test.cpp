@@ -143,6 +143,23 @@ TEST_CASE("dexpinv: inverts the closed form of dexp for small and large u") {
     }
 }
 
+// Just below |u| = 1e-3 the header asks for the series c = 1/12 + x^2/720: its second term
+// moves the result by 2 x^4/720 |v| = 2.8e-15 |v| there, a dozen ulps of v, so a tolerance of a
+// few ulps against a long double reference (the series to x^4) sees it.
+TEST_CASE("dexpinv: keeps its last digits just below |u| = 1e-3") {
+    using Vec3L = Eigen::Matrix<long double, 3, 1>;
+    for (int n = 0; n < 10; ++n) {
+        const Vec3 d = checks::random_unit();
+        const Vec3 u = 0.999e-3 * d, v = d.unitOrthogonal();  // |v| = 1, v orthogonal to u
+        const Vec3L uL = u.cast<long double>(), vL = v.cast<long double>();
+        const long double x2 = uL.squaredNorm();
+        const long double c = 1.0L / 12 + x2 / 720 + x2 * x2 / 30240;
+        const Vec3L uv = uL.cross(vL);
+        const Vec3L ref = vL - uv / 2 + c * uL.cross(uv);
+        CHECK_MAT_NEAR(rigid::dexpinv(u, v), Vec3(ref.cast<double>()), 6e-16);
+    }
+}
+
 TEST_CASE("dexpinv: is the identity at u = 0") {
     const Vec3 v(0.3, -1.2, 2.5);
     CHECK_MAT_NEAR(rigid::dexpinv(Vec3::Zero(), v), v, 0.0);

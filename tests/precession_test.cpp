@@ -197,11 +197,41 @@ TEST_CASE("fit_circle: measures how far an ellipse and a saddle curve are from a
     CHECK_SMALL(s.circle_residual, 1e-12);
 }
 
+// The refusals are relative: a circle of radius 1e-3 far from the origin spans a plane as well as
+// one of radius 1 (a check of the largest singular value against an absolute number refuses it).
+// Points at irregular angles: every coefficient of the Kasa fit matters.
+TEST_CASE("fit_circle: recovers a small circle far from the origin from points on part of it") {
+    const Vec3 centre(10, -20, 5), normal = Vec3(1, 2, 2) / 3;
+    const Vec3 u = normal.unitOrthogonal(), v = normal.cross(u);
+    for (double radius : {1e-3, 1e-1}) {
+        CAPTURE(radius);
+        std::vector<Vec3> pts;
+        // Irregular angles over 3/4 of a turn: the centre is not the centroid of the points (as it
+        // is for a full turn), nor on an axis of their scatter (as for evenly spaced points on an arc).
+        for (double th : {0.1, 0.35, 0.5, 1.2, 1.4, 2.3, 2.45, 3.0, 3.9, 4.1})
+            pts.push_back(centre + radius * (std::cos(th) * u + std::sin(th) * v));
+        const rigid::CircleFit f = rigid::fit_circle(pts);
+        // Round-off of coordinates of size 20: a few eps * 20 in the centre and the radius.
+        CHECK_MAT_NEAR(f.circle.centre, centre, 1e-12);
+        CHECK_NEAR(f.circle.radius, radius, 1e-12);
+        CHECK_NEAR(std::abs(f.circle.normal.dot(normal)), 1.0, 1e-14);
+        CHECK_SMALL(f.plane_residual, 1e-12);
+        CHECK_SMALL(f.circle_residual, 1e-12);
+    }
+}
+
 TEST_CASE("fit_circle: rejects too few or non-finite or coincident or collinear points") {
     CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3::UnitY()}), std::invalid_argument);
     CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3::UnitY(), Vec3(nan_, 0, 0)}), std::invalid_argument);
     CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3::UnitX(), Vec3::UnitX()}), std::invalid_argument);
     CHECK_THROWS_AS(rigid::fit_circle({Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(3, 3, 3)}), std::invalid_argument);
+    // The line rule on both sides of its threshold: four points whose centred coordinates are
+    // orthogonal columns, so the singular values are sqrt(2) and sqrt(2) r, and r is their ratio.
+    auto rhombus = [](double r) {
+        return std::vector<Vec3>{Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, r, 0), Vec3(0, -r, 0)};
+    };
+    CHECK_THROWS_AS(rigid::fit_circle(rhombus(0.5e-12)), std::invalid_argument);
+    CHECK_NOTHROW(rigid::fit_circle(rhombus(2e-12)));
     // Three points of a triangle do span a plane: their circumcircle.
     const rigid::CircleFit f = rigid::fit_circle({Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0)});
     CHECK_NEAR(f.circle.radius, 1.0, 1e-14);

@@ -1,8 +1,9 @@
 // workbook_mutants: the mutation gate (README.md, "The mutation gate").
 //
 //   workbook_mutants run --setup <build>/grading --solutions <dir> --out <dir>
-//                        [--topic T]... [--sample N --seed S] [--allow <file>] [-j N] [--timeout s]
-//                        [--build-timeout s]
+//                        [--topic T]... [--mutant ID]... [--sample N --seed S] [--allow <file>] [-j N]
+//                        [--timeout s] [--build-timeout s]
+//   (--mutant grades again only the mutants of these ids, e.g. the survivors of a full run)
 //   workbook_mutants list --setup <build>/grading --solutions <dir> [--topic T]... [--sample N --seed S]
 //
 // A mutant is the reference solution solutions/<topic>.cpp with one plausible wrong change, made
@@ -48,7 +49,7 @@ struct Mutant {
 
 struct Options {
     std::string command, setup, solutions, out, allow;
-    std::vector<std::string> topics;
+    std::vector<std::string> topics, ids;
     int sample = 0, jobs = 2;
     unsigned seed = 1;
     double timeout = 30, build_timeout = 900;  // generous: a loaded machine must not kill a mutant
@@ -380,6 +381,12 @@ std::vector<Mutant> generate(const Options& o) {
     all = sample(std::move(all), o.sample, o.seed);
     std::map<std::string, int> count;
     for (auto& m : all) m.id = m.topic + "-" + std::to_string(++count[m.topic]);
+    if (!o.ids.empty()) {  // --mutant: again only these (ids as a run without --sample numbers them)
+        for (const auto& id : o.ids)
+            if (std::none_of(all.begin(), all.end(), [&](const Mutant& m) { return m.id == id; }))
+                die("no mutant '" + id + "' (workbook_mutants list shows them)");
+        std::erase_if(all, [&](const Mutant& m) { return std::find(o.ids.begin(), o.ids.end(), m.id) == o.ids.end(); });
+    }
     return all;
 }
 
@@ -599,7 +606,7 @@ Options parse(int argc, char** argv) {
     Options o;
     if (argc < 2)
         die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
-            "[--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
+            "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
     o.command = argv[1];
     if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
     for (int i = 2; i < argc; ++i) {
@@ -626,6 +633,8 @@ Options parse(int argc, char** argv) {
             o.allow = value();
         else if (a == "--topic")
             o.topics.push_back(value());
+        else if (a == "--mutant")
+            o.ids.push_back(value());
         else if (a == "--sample")
             o.sample = static_cast<int>(number(1));
         else if (a == "--seed")
