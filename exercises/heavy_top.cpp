@@ -32,7 +32,9 @@ Vec3 torque(const Vec3& k, const Vec3& z0, const TrialPrecession& p, double t) {
 Vec3 evaluate(const PrecessionSeries& s, double alpha, double beta, double t) { todo("evaluate"); }
 
 // TODO: [P, (3.5)], corrected: the coefficient vectors of E.
-PrecessionSeries euler_vector_series(const Mat3& J, double alpha, double beta, double b3) { todo("euler_vector_series"); }
+PrecessionSeries euler_vector_series(const Mat3& J, double alpha, double beta, double b3) {
+    todo("euler_vector_series");
+}
 
 // TODO: [P, (3.6)], corrected: the coefficient vectors of T.
 PrecessionSeries torque_series(const Vec3& k, const Vec3& z0, double alpha, double beta, double b3) {

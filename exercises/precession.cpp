@@ -17,9 +17,7 @@ Vec3 precession_body_angular_velocity(const RegularPrecession& p, double t) {
 }
 
 // TODO: omega = R Omega, written as beta b + alpha R^b(beta t) a.
-Vec3 precession_lab_angular_velocity(const RegularPrecession& p, double t) {
-    todo("precession_lab_angular_velocity");
-}
+Vec3 precession_lab_angular_velocity(const RegularPrecession& p, double t) { todo("precession_lab_angular_velocity"); }
 
 // TODO: [P, (1.6)] the constant |Omega|^2, from (1.5) (not the printed value: see the chapter).
 double precession_omega_squared(const RegularPrecession& p) { todo("precession_omega_squared"); }

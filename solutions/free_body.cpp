@@ -14,7 +14,8 @@ Vec3 euler_rhs(const Vec3& I, const Vec3& Omega) {
     // exact when they are within a factor 2, where I2 Omega2 Omega3 - I3 Omega3 Omega2 would
     // leave round-off of eps I2 / I1 (Chapter 6 meets this far out on a Grioli line).
     const Vec3& W = Omega;
-    return Vec3((I(1) - I(2)) * W(1) * W(2) / I(0), (I(2) - I(0)) * W(2) * W(0) / I(1), (I(0) - I(1)) * W(0) * W(1) / I(2));
+    return Vec3((I(1) - I(2)) * W(1) * W(2) / I(0), (I(2) - I(0)) * W(2) * W(0) / I(1),
+                (I(0) - I(1)) * W(0) * W(1) / I(2));
 }
 
 Mat3 poisson_rhs(const Mat3& R, const Vec3& Omega) { return R * hat(Omega); }

@@ -45,8 +45,10 @@ Moments moments(double A, double B, double C) {
     require_positive(A, "A");
     require_positive(B, "B");
     require_positive(C, "C");
-    if (!(A < B)) throw std::invalid_argument("the moments must satisfy A < B, got A = " + number(A) + ", B = " + number(B));
-    if (!(B < C)) throw std::invalid_argument("the moments must satisfy B < C, got B = " + number(B) + ", C = " + number(C));
+    if (!(A < B))
+        throw std::invalid_argument("the moments must satisfy A < B, got A = " + number(A) + ", B = " + number(B));
+    if (!(B < C))
+        throw std::invalid_argument("the moments must satisfy B < C, got B = " + number(B) + ", C = " + number(C));
     const double CB = C - B;
     if (!(CB <= A))
         throw std::invalid_argument("the moments must satisfy the triangle inequality A + B >= C, got A + B = " +
@@ -59,8 +61,10 @@ Moments moments_from_gaps(double A, double B_minus_A, double C_minus_B) {
     require_finite(B_minus_A, "B - A");
     require_finite(C_minus_B, "C - B");
     require_positive(A, "A");
-    if (!(B_minus_A > 0)) throw std::invalid_argument("the moments must satisfy A < B: B - A must be > 0, got " + number(B_minus_A));
-    if (!(C_minus_B > 0)) throw std::invalid_argument("the moments must satisfy B < C: C - B must be > 0, got " + number(C_minus_B));
+    if (!(B_minus_A > 0))
+        throw std::invalid_argument("the moments must satisfy A < B: B - A must be > 0, got " + number(B_minus_A));
+    if (!(C_minus_B > 0))
+        throw std::invalid_argument("the moments must satisfy B < C: C - B must be > 0, got " + number(C_minus_B));
     if (!(C_minus_B <= A))
         throw std::invalid_argument("the moments must satisfy the triangle inequality A + B >= C: C - B = " +
                                     number(C_minus_B) + " must be <= A = " + number(A));
@@ -113,7 +117,9 @@ HeavyTop grioli_top(const Moments& m, const GrioliPrecession& g) {
     return heavy_top(Vec3(m.A, m.B, m.C).asDiagonal().toDenseMatrix(), g.f, g.k, g.z0);
 }
 
-BodyState grioli_initial_state(const GrioliPrecession& g) { return {grioli_angular_velocity(g, 0.0), Mat3::Identity()}; }
+BodyState grioli_initial_state(const GrioliPrecession& g) {
+    return {grioli_angular_velocity(g, 0.0), Mat3::Identity()};
+}
 
 // At t = 0, G is level with O ((k, a) = 0) and Omega = sigma alpha (a + b); since J b = B b and
 // (a, b) = 0, 2H = alpha^2 ((a, J a) + B), and (a, J a) = A a_A^2 + C a_C^2 = A + C - B, so
@@ -127,8 +133,8 @@ BodyState euler_poisson_rhs_gaps(const Moments& m, double f, const Vec3& k, cons
     const Vec3& W = s.Omega;
     const Vec3 torque = f * (s.R.transpose() * k).cross(z0);
     const double B_minus_C = -m.C_minus_B, C_minus_A = m.B_minus_A + m.C_minus_B, A_minus_B = -m.B_minus_A;
-    const Vec3 W_dot((B_minus_C * W.y() * W.z() + torque.x()) / m.A,   //
-                     (C_minus_A * W.z() * W.x() + torque.y()) / m.B,   //
+    const Vec3 W_dot((B_minus_C * W.y() * W.z() + torque.x()) / m.A,  //
+                     (C_minus_A * W.z() * W.x() + torque.y()) / m.B,  //
                      (A_minus_B * W.x() * W.y() + torque.z()) / m.C);
     return {W_dot, s.R * hat(W)};
 }

@@ -136,7 +136,7 @@ Vec3 euler_vector(const Mat3& J, const TrialPrecession& p, double t) {
     require_finite(p.beta, "beta");
     require_finite(t, "time t");
     const Vec3 bt = rotation_about(a, p.alpha * t).transpose() * b;  // R^a(alpha t)^T b
-    const Vec3 Omega = p.alpha * a + p.beta * bt;                     // [P, (1.5)]
+    const Vec3 Omega = p.alpha * a + p.beta * bt;                    // [P, (1.5)]
     const Vec3 Omega_dot = -p.alpha * p.beta * a.cross(bt);
     return J * Omega_dot - (J * Omega).cross(Omega);
 }
@@ -167,8 +167,10 @@ PrecessionSeries euler_vector_series(const Mat3& J, double alpha, double beta, d
     const double w = alpha + beta * b3, bb = beta * b2, half = 0.5 * bb * bb;
     PrecessionSeries E;
     E.constant = (half - w * w) * Vec3(J(1, 2), -J(0, 2), 0);
-    E.cos_alpha = bb * Vec3(w * (J(2, 2) - J(1, 1)) + alpha * J(0, 0), (2 * alpha + beta * b3) * J(0, 1), -beta * b3 * J(0, 2));
-    E.sin_alpha = bb * Vec3(-(2 * alpha + beta * b3) * J(0, 1), w * (J(0, 0) - J(2, 2)) - alpha * J(1, 1), beta * b3 * J(1, 2));
+    E.cos_alpha =
+        bb * Vec3(w * (J(2, 2) - J(1, 1)) + alpha * J(0, 0), (2 * alpha + beta * b3) * J(0, 1), -beta * b3 * J(0, 2));
+    E.sin_alpha =
+        bb * Vec3(-(2 * alpha + beta * b3) * J(0, 1), w * (J(0, 0) - J(2, 2)) - alpha * J(1, 1), beta * b3 * J(1, 2));
     E.cos_2alpha = half * Vec3(J(1, 2), J(0, 2), -2 * J(0, 1));
     E.sin_2alpha = half * Vec3(J(0, 2), -J(1, 2), J(1, 1) - J(0, 0));  // [P] prints 2 (J22 - J11)
     return E;
@@ -177,7 +179,8 @@ PrecessionSeries euler_vector_series(const Mat3& J, double alpha, double beta, d
 PrecessionSeries torque_series(const Vec3& k, const Vec3& z0, double alpha, double beta, double b3) {
     if (!k.allFinite() || !z0.allFinite()) throw std::invalid_argument("k and z(0) must be finite vectors");
     if (!(std::abs(k.x()) <= 1e-12 * k.norm()))
-        throw std::invalid_argument("k must lie in the plane of a and b, k = (0, k2, k3) [P, (3.3)], got " + describe(k));
+        throw std::invalid_argument("k must lie in the plane of a and b, k = (0, k2, k3) [P, (3.3)], got " +
+                                    describe(k));
     require_finite(alpha, "alpha");
     require_finite(beta, "beta");
     require_b3(b3);

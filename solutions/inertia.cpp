@@ -33,11 +33,11 @@ void require_symmetric(const Mat3& I, const std::string& name) {
 // The geometry of a line through G in the principal plane, with the combinations the closed
 // forms need, each formed without cancellation where it can be.
 struct Line {
-    double zA, zC;     // the unit direction
-    double zA2, zC2;   // its squares
-    double k;          // z_A^2 - z_C^2 = cos 2phi_g
-    double s2;         // 2 z_A z_C     = sin 2phi_g
-    double delta;      // (C_g - B_g) z_A^2 - (B_g - A_g) z_C^2 = Delta_- - B_g
+    double zA, zC;    // the unit direction
+    double zA2, zC2;  // its squares
+    double k;         // z_A^2 - z_C^2 = cos 2phi_g
+    double s2;        // 2 z_A z_C     = sin 2phi_g
+    double delta;     // (C_g - B_g) z_A^2 - (B_g - A_g) z_C^2 = Delta_- - B_g
 };
 
 Line line_of(const BodyAtG& b, const Vec3& z) {
@@ -220,9 +220,7 @@ Cos2Sin2 smallest_axis_tilt(const BodyAtG& body, double L, const Vec3& z) {
     return tilt_on(body, body.mu * L * L, line_of(body, z));
 }
 
-Cos2Sin2 grioli_ratio(const ShiftedMoments& m) {
-    return {m.B_minus_A / m.C_minus_A, m.C_minus_B / m.C_minus_A};
-}
+Cos2Sin2 grioli_ratio(const ShiftedMoments& m) { return {m.B_minus_A / m.C_minus_A, m.C_minus_B / m.C_minus_A}; }
 
 PrincipalFrame principal_frame(const BodyAtG& body, double L, const Vec3& z) {
     require_body(body);

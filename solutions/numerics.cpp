@@ -66,7 +66,8 @@ Increment strang_step(const HeavyTop& top, const BodyState& s, double h) {
     Increment d = torque_kick(top, s, h / 2);
     // The rotations read Omega only; R is needed again by the closing kick.
     BodyState now{s.Omega + d.dOmega, s.R};
-    static constexpr std::array<std::pair<int, double>, 5> rotations{{{0, 0.5}, {1, 0.5}, {2, 1.0}, {1, 0.5}, {0, 0.5}}};
+    static constexpr std::array<std::pair<int, double>, 5> rotations{
+        {{0, 0.5}, {1, 0.5}, {2, 1.0}, {1, 0.5}, {0, 0.5}}};
     for (const auto& [axis, fraction] : rotations) {
         d = combine(d, free_rotation(top, now, axis, fraction * h));
         now.Omega = s.Omega + d.dOmega;

@@ -96,7 +96,8 @@ Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) {
     const Vec3 b = require_axis(field.B, "the field B");
     require_spin_field(field);
     require_finite(t, "the time t");
-    if (!S0.allFinite()) throw std::invalid_argument("the initial spin S0 must be a finite vector, got " + describe(S0));
+    if (!S0.allFinite())
+        throw std::invalid_argument("the initial spin S0 must be a finite vector, got " + describe(S0));
     const double size = S0.norm();
     if (size == 0) return S0;
     const double B = field.B.norm();

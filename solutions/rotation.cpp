@@ -35,9 +35,7 @@ Vec3 body_angular_velocity(const Mat3& R, const Mat3& R_dot) { return vee(R.tran
 
 Vec3 lab_angular_velocity(const Mat3& R, const Mat3& R_dot) { return vee(R_dot * R.transpose()); }
 
-double orthogonality_defect(const Mat3& R) {
-    return (R.transpose() * R - Mat3::Identity()).norm();
-}
+double orthogonality_defect(const Mat3& R) { return (R.transpose() * R - Mat3::Identity()).norm(); }
 
 bool is_rotation(const Mat3& R, double tol) {
     require_finite(tol, "tolerance");
@@ -48,10 +46,9 @@ bool is_rotation(const Mat3& R, double tol) {
 
 AxisAngle axis_angle(const Mat3& R) {
     if (!is_rotation(R, 1e-9))
-        throw std::invalid_argument(
-            "axis_angle needs a rotation matrix (finite, R^T R = 1 to 1e-9, det R > 0)");
-    const Vec3 v = vee(R);                    // sin(phi) a
-    const double c = 0.5 * (R.trace() - 1);   // cos(phi)
+        throw std::invalid_argument("axis_angle needs a rotation matrix (finite, R^T R = 1 to 1e-9, det R > 0)");
+    const Vec3 v = vee(R);                   // sin(phi) a
+    const double c = 0.5 * (R.trace() - 1);  // cos(phi)
     const double phi = std::atan2(v.norm(), c);
     if (v.norm() == 0 && c > 0) return {Vec3::UnitZ(), 0.0};
     if (c >= 0) return {v.normalized(), phi};

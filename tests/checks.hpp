@@ -27,15 +27,14 @@ inline double max_abs_diff(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 // draws the same "random" cases whether it runs alone or after others, so a failure
 // reproduces and a grader run in one process agrees with one run test by test.
 std::mt19937_64& rng();
-inline double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng());
-}
+inline double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng()); }
 inline rigid::Vec3 random_vector(double scale = 1.0) {
     return scale * rigid::Vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
 }
 inline rigid::Vec3 random_unit() {
     rigid::Vec3 v;
-    do v = random_vector(); while (v.norm() < 0.1);
+    do v = random_vector();
+    while (v.norm() < 0.1);
     return v.normalized();
 }
 
@@ -101,36 +100,35 @@ std::string message_of(F&& f) {
     INFO("this test also uses your " names " (graded by their own tests): if one of them fails, fix it first")
 
 // |actual - expected| <= tol, with both values and the tolerance in the failure message.
-#define CHECK_NEAR(actual, expected, tol)                                                   \
-    do {                                                                                   \
-        const double check_actual_ = (actual), check_expected_ = (expected);              \
-        const double check_tol_ = (tol);                                                   \
-        INFO("expected " << check_expected_ << ", actual " << check_actual_ << ", |diff| " \
-                         << std::abs(check_actual_ - check_expected_) << ", tolerance "    \
-                         << check_tol_);                                                   \
-        CHECK(std::abs(check_actual_ - check_expected_) <= check_tol_);                    \
-        checks::log_margin(__FILE__, __LINE__, std::abs(check_actual_ - check_expected_), check_tol_); \
+#define CHECK_NEAR(actual, expected, tol)                                                               \
+    do {                                                                                                \
+        const double check_actual_ = (actual), check_expected_ = (expected);                            \
+        const double check_tol_ = (tol);                                                                \
+        INFO("expected " << check_expected_ << ", actual " << check_actual_ << ", |diff| "              \
+                         << std::abs(check_actual_ - check_expected_) << ", tolerance " << check_tol_); \
+        CHECK(std::abs(check_actual_ - check_expected_) <= check_tol_);                                 \
+        checks::log_margin(__FILE__, __LINE__, std::abs(check_actual_ - check_expected_), check_tol_);  \
     } while (0)
 
 // Largest entry of |A - B| <= tol, with both matrices in the failure message.
-#define CHECK_MAT_NEAR(A, B, tol)                                                        \
-    do {                                                                                \
-        const Eigen::MatrixXd check_a_ = (A), check_b_ = (B);                           \
-        const double check_tol_ = (tol);                                                \
-        INFO("expected\n" << check_b_ << "\nactual\n" << check_a_ << "\nmax |diff| "     \
-                          << checks::max_abs_diff(check_a_, check_b_) << ", tolerance " \
-                          << check_tol_);                                               \
-        CHECK(checks::max_abs_diff(check_a_, check_b_) <= check_tol_);                  \
-        checks::log_margin(__FILE__, __LINE__, checks::max_abs_diff(check_a_, check_b_), check_tol_); \
+#define CHECK_MAT_NEAR(A, B, tol)                                                                         \
+    do {                                                                                                  \
+        const Eigen::MatrixXd check_a_ = (A), check_b_ = (B);                                             \
+        const double check_tol_ = (tol);                                                                  \
+        INFO("expected\n"                                                                                 \
+             << check_b_ << "\nactual\n"                                                                  \
+             << check_a_ << "\nmax |diff| " << checks::max_abs_diff(check_a_, check_b_) << ", tolerance " \
+             << check_tol_);                                                                              \
+        CHECK(checks::max_abs_diff(check_a_, check_b_) <= check_tol_);                                    \
+        checks::log_margin(__FILE__, __LINE__, checks::max_abs_diff(check_a_, check_b_), check_tol_);     \
     } while (0)
 
 // error <= tol for an error measure (a norm, a relative error, a residual), with the error and
 // the tolerance in the failure message like every other check.
-#define CHECK_SMALL(error, tol)                                                            \
-    do {                                                                                \
-        const double check_err_ = (error), check_tol_ = (tol);                          \
-        INFO("expected at most " << check_tol_ << ", actual " << check_err_ << ", tolerance " \
-                                 << check_tol_);                                        \
-        CHECK(check_err_ <= check_tol_);                                                \
-        checks::log_margin(__FILE__, __LINE__, check_err_, check_tol_);                 \
+#define CHECK_SMALL(error, tol)                                                                               \
+    do {                                                                                                      \
+        const double check_err_ = (error), check_tol_ = (tol);                                                \
+        INFO("expected at most " << check_tol_ << ", actual " << check_err_ << ", tolerance " << check_tol_); \
+        CHECK(check_err_ <= check_tol_);                                                                      \
+        checks::log_margin(__FILE__, __LINE__, check_err_, check_tol_);                                       \
     } while (0)

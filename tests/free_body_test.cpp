@@ -2,6 +2,8 @@
 // exercise it grades; each cross-checks against an independent computation: the equations
 // written out with the Levi-Civita symbol or by components, and the exact elliptic motion
 // (rigid/free_body_exact.hpp, provided) integrated against with GSL's rk8pd.
+#include "rigid/free_body.hpp"
+
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -9,7 +11,6 @@
 #include <vector>
 
 #include "checks.hpp"
-#include "rigid/free_body.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/ode.hpp"
 
@@ -30,127 +31,125 @@ Vec3 random_moments() {
     return Vec3(y + z, z + x, x + y);
 }
 
-Mat3 random_rotation() {
-    return Eigen::AngleAxisd(checks::uniform(0, 3), checks::random_unit()).toRotationMatrix();
-}
+Mat3 random_rotation() { return Eigen::AngleAxisd(checks::uniform(0, 3), checks::random_unit()).toRotationMatrix(); }
 
 }  // namespace
 
 TEST_SUITE("ch03_free_body") {
-
-TEST_CASE("euler_rhs: equals Euler's equations written by components") {
-    for (int n = 0; n < 20; ++n) {
-        const Vec3 I = random_moments(), w = checks::random_vector(3);
-        CAPTURE(I.transpose());
-        const Vec3 expected((I(1) - I(2)) * w(1) * w(2) / I(0), (I(2) - I(0)) * w(2) * w(0) / I(1),
-                            (I(0) - I(1)) * w(0) * w(1) / I(2));
-        CHECK_MAT_NEAR(rigid::euler_rhs(I, w), expected, 1e-14);
+    TEST_CASE("euler_rhs: equals Euler's equations written by components") {
+        for (int n = 0; n < 20; ++n) {
+            const Vec3 I = random_moments(), w = checks::random_vector(3);
+            CAPTURE(I.transpose());
+            const Vec3 expected((I(1) - I(2)) * w(1) * w(2) / I(0), (I(2) - I(0)) * w(2) * w(0) / I(1),
+                                (I(0) - I(1)) * w(0) * w(1) / I(2));
+            CHECK_MAT_NEAR(rigid::euler_rhs(I, w), expected, 1e-14);
+        }
     }
-}
 
-TEST_CASE("euler_rhs: vanishes along principal axes and keeps Omega3 of a symmetric body") {
-    const Vec3 I(1.0, 2.0, 2.5);
-    for (int k = 0; k < 3; ++k) CHECK_MAT_NEAR(rigid::euler_rhs(I, 1.7 * Vec3::Unit(k)), Vec3::Zero(), 0.0);
-    const Vec3 d = rigid::euler_rhs(Vec3(1.5, 1.5, 2.0), Vec3(0.3, -0.8, 1.1));
-    CHECK_SMALL(std::abs(d(2)), 1e-16);
-    CHECK(d.norm() > 0.1);
-}
+    TEST_CASE("euler_rhs: vanishes along principal axes and keeps Omega3 of a symmetric body") {
+        const Vec3 I(1.0, 2.0, 2.5);
+        for (int k = 0; k < 3; ++k) CHECK_MAT_NEAR(rigid::euler_rhs(I, 1.7 * Vec3::Unit(k)), Vec3::Zero(), 0.0);
+        const Vec3 d = rigid::euler_rhs(Vec3(1.5, 1.5, 2.0), Vec3(0.3, -0.8, 1.1));
+        CHECK_SMALL(std::abs(d(2)), 1e-16);
+        CHECK(d.norm() > 0.1);
+    }
 
-TEST_CASE("poisson_rhs: equals -eps_jkm Omega_k R_im of (6.8)") {
-    for (int n = 0; n < 10; ++n) {
+    TEST_CASE("poisson_rhs: equals -eps_jkm Omega_k R_im of (6.8)") {
+        for (int n = 0; n < 10; ++n) {
+            const Mat3 R = random_rotation();
+            const Vec3 w = checks::random_vector(2);
+            Mat3 expected = Mat3::Zero();
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    for (int k = 0; k < 3; ++k)
+                        for (int m = 0; m < 3; ++m) expected(i, j) -= eps3(j + 1, k + 1, m + 1) * w(k) * R(i, m);
+            CHECK_MAT_NEAR(rigid::poisson_rhs(R, w), expected, 1e-15);
+        }
+    }
+
+    TEST_CASE("poisson_rhs: moves every body vector with the velocity omega x x") {
+        // d/dt (R x_body) = R (Omega x x_body) = omega x (R x_body), omega = R Omega.
         const Mat3 R = random_rotation();
-        const Vec3 w = checks::random_vector(2);
-        Mat3 expected = Mat3::Zero();
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                for (int k = 0; k < 3; ++k)
-                    for (int m = 0; m < 3; ++m) expected(i, j) -= eps3(j + 1, k + 1, m + 1) * w(k) * R(i, m);
-        CHECK_MAT_NEAR(rigid::poisson_rhs(R, w), expected, 1e-15);
+        const Vec3 w = checks::random_vector(2), x = checks::random_vector(1);
+        CHECK_MAT_NEAR(rigid::poisson_rhs(R, w) * x, (R * w).cross(R * x), 1e-14);
     }
-}
 
-TEST_CASE("poisson_rhs: moves every body vector with the velocity omega x x") {
-    // d/dt (R x_body) = R (Omega x x_body) = omega x (R x_body), omega = R Omega.
-    const Mat3 R = random_rotation();
-    const Vec3 w = checks::random_vector(2), x = checks::random_vector(1);
-    CHECK_MAT_NEAR(rigid::poisson_rhs(R, w) * x, (R * w).cross(R * x), 1e-14);
-}
-
-TEST_CASE("free_body_equations: packs (6.7) and (6.8) in the documented layout") {
-    const Vec3 I = random_moments(), w = checks::random_vector(2);
-    const Mat3 R = random_rotation();
-    const rigid::OdeRhs f = rigid::free_body_equations(I);
-    VecX y(12);
-    y << w, R.row(0).transpose(), R.row(1).transpose(), R.row(2).transpose();
-    const VecX d = f(0.3, y);
-    REQUIRE(d.size() == 12);
-    const Vec3 ew((I(1) - I(2)) * w(1) * w(2) / I(0), (I(2) - I(0)) * w(2) * w(0) / I(1),
-                  (I(0) - I(1)) * w(0) * w(1) / I(2));
-    CHECK_MAT_NEAR(d.head<3>(), ew, 1e-14);
-    // Row i of R hat(Omega) is (row i of R) x Omega, as a cross product.
-    for (int i = 0; i < 3; ++i) CHECK_MAT_NEAR(d.segment<3>(3 + 3 * i), Vec3(R.row(i).transpose().cross(w)), 1e-15);
-}
-
-TEST_CASE("free_body_equations: integrated by rk8pd it follows the exact elliptic motion") {
-    for (const Vec3& w0 : {Vec3(0.3, -2.0, 0.5), Vec3(1.2, 0.4, -0.9), Vec3(0.01, 3.0, 0.02)}) {
-        CAPTURE(w0.transpose());
-        const Vec3 I(1.0, 2.0, 2.6);
-        const auto times = rigid::linspace(0, 8, 16);
-        const auto exact = rigid::free_body_motion(I, w0);
-        const auto R_ex = rigid::free_body_exact_rotations(exact, times);
-        double err = 0;
-        std::size_t k = 0;
-        rigid::integrate_gsl(rigid::free_body_equations(I), rigid::pack({w0, Mat3::Identity()}), times,
-                             [&](double t, const VecX& y) {
-                                 const rigid::BodyState s = rigid::unpack(y);
-                                 err = std::max(err, (s.Omega - rigid::free_body_exact_omega(exact, t)).norm() / w0.norm());
-                                 err = std::max(err, (s.R - R_ex[k++]).norm());
-                             },
-                             {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
-        CHECK_SMALL(err, 1e-8);
+    TEST_CASE("free_body_equations: packs (6.7) and (6.8) in the documented layout") {
+        const Vec3 I = random_moments(), w = checks::random_vector(2);
+        const Mat3 R = random_rotation();
+        const rigid::OdeRhs f = rigid::free_body_equations(I);
+        VecX y(12);
+        y << w, R.row(0).transpose(), R.row(1).transpose(), R.row(2).transpose();
+        const VecX d = f(0.3, y);
+        REQUIRE(d.size() == 12);
+        const Vec3 ew((I(1) - I(2)) * w(1) * w(2) / I(0), (I(2) - I(0)) * w(2) * w(0) / I(1),
+                      (I(0) - I(1)) * w(0) * w(1) / I(2));
+        CHECK_MAT_NEAR(d.head<3>(), ew, 1e-14);
+        // Row i of R hat(Omega) is (row i of R) x Omega, as a cross product.
+        for (int i = 0; i < 3; ++i) CHECK_MAT_NEAR(d.segment<3>(3 + 3 * i), Vec3(R.row(i).transpose().cross(w)), 1e-15);
     }
-}
 
-TEST_CASE("free_body_equations: rejects bad moments and accepts a flat body") {
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(-1, 2, 2)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(0, 2, 2)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 2, 3.5)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(4, 1, 2)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 1.5, 3)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, nan_, 2)), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 2, inf_)), std::invalid_argument);
-    // I1 + I2 = I3 is a flat body: admissible, and its equations work.
-    const rigid::OdeRhs f = rigid::free_body_equations(Vec3(1, 2, 3));
-    const VecX d = f(0.0, rigid::pack({Vec3(1, 1, 1), Mat3::Identity()}));
-    CHECK_NEAR(d(0), (2.0 - 3.0) / 1.0, 1e-15);
-}
-
-TEST_CASE("rotational_energy: is half of Omega . I Omega") {
-    for (int n = 0; n < 10; ++n) {
-        const Vec3 I = random_moments(), w = checks::random_vector(3);
-        CHECK_NEAR(rigid::rotational_energy(I, w), 0.5 * w.dot(I.asDiagonal() * w), 1e-14);
+    TEST_CASE("free_body_equations: integrated by rk8pd it follows the exact elliptic motion") {
+        for (const Vec3& w0 : {Vec3(0.3, -2.0, 0.5), Vec3(1.2, 0.4, -0.9), Vec3(0.01, 3.0, 0.02)}) {
+            CAPTURE(w0.transpose());
+            const Vec3 I(1.0, 2.0, 2.6);
+            const auto times = rigid::linspace(0, 8, 16);
+            const auto exact = rigid::free_body_motion(I, w0);
+            const auto R_ex = rigid::free_body_exact_rotations(exact, times);
+            double err = 0;
+            std::size_t k = 0;
+            rigid::integrate_gsl(rigid::free_body_equations(I), rigid::pack({w0, Mat3::Identity()}), times,
+                                 [&](double t, const VecX& y) {
+                                     const rigid::BodyState s = rigid::unpack(y);
+                                     err = std::max(
+                                         err, (s.Omega - rigid::free_body_exact_omega(exact, t)).norm() / w0.norm());
+                                     err = std::max(err, (s.R - R_ex[k++]).norm());
+                                 },
+                                 {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
+            CHECK_SMALL(err, 1e-8);
+        }
     }
-    CHECK_NEAR(rigid::rotational_energy(Vec3(1, 2, 3), Vec3(1, 1, 1)), 3.0, 0.0);
-}
 
-TEST_CASE("angular_momentum_squared: is |I Omega|^2") {
-    for (int n = 0; n < 10; ++n) {
-        const Vec3 I = random_moments(), w = checks::random_vector(3);
-        CHECK_NEAR(rigid::angular_momentum_squared(I, w), (I.asDiagonal() * w).squaredNorm(), 1e-13);
+    TEST_CASE("free_body_equations: rejects bad moments and accepts a flat body") {
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(-1, 2, 2)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(0, 2, 2)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 2, 3.5)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(4, 1, 2)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 1.5, 3)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, nan_, 2)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 2, inf_)), std::invalid_argument);
+        // I1 + I2 = I3 is a flat body: admissible, and its equations work.
+        const rigid::OdeRhs f = rigid::free_body_equations(Vec3(1, 2, 3));
+        const VecX d = f(0.0, rigid::pack({Vec3(1, 1, 1), Mat3::Identity()}));
+        CHECK_NEAR(d(0), (2.0 - 3.0) / 1.0, 1e-15);
     }
-    CHECK_NEAR(rigid::angular_momentum_squared(Vec3(1, 2, 3), Vec3(1, 1, 1)), 14.0, 0.0);
-}
 
-TEST_CASE("rotational_energy: both integrals of (6.9) are constant along the exact motion") {
-    const Vec3 I(1.0, 1.7, 2.2), w0(0.8, -0.6, 1.4);
-    const auto mo = rigid::free_body_motion(I, w0);
-    const double E0 = rigid::rotational_energy(I, w0), M0 = (I.asDiagonal() * w0).squaredNorm();
-    for (double t : {0.5, 7.0, 60.0}) {
-        const Vec3 w = rigid::free_body_exact_omega(mo, t);
-        CHECK_NEAR(rigid::rotational_energy(I, w), E0, 1e-14 * E0);
-        CHECK_NEAR((I.asDiagonal() * w).squaredNorm(), M0, 1e-14 * M0);
+    TEST_CASE("rotational_energy: is half of Omega . I Omega") {
+        for (int n = 0; n < 10; ++n) {
+            const Vec3 I = random_moments(), w = checks::random_vector(3);
+            CHECK_NEAR(rigid::rotational_energy(I, w), 0.5 * w.dot(I.asDiagonal() * w), 1e-14);
+        }
+        CHECK_NEAR(rigid::rotational_energy(Vec3(1, 2, 3), Vec3(1, 1, 1)), 3.0, 0.0);
     }
-}
+
+    TEST_CASE("angular_momentum_squared: is |I Omega|^2") {
+        for (int n = 0; n < 10; ++n) {
+            const Vec3 I = random_moments(), w = checks::random_vector(3);
+            CHECK_NEAR(rigid::angular_momentum_squared(I, w), (I.asDiagonal() * w).squaredNorm(), 1e-13);
+        }
+        CHECK_NEAR(rigid::angular_momentum_squared(Vec3(1, 2, 3), Vec3(1, 1, 1)), 14.0, 0.0);
+    }
+
+    TEST_CASE("rotational_energy: both integrals of (6.9) are constant along the exact motion") {
+        const Vec3 I(1.0, 1.7, 2.2), w0(0.8, -0.6, 1.4);
+        const auto mo = rigid::free_body_motion(I, w0);
+        const double E0 = rigid::rotational_energy(I, w0), M0 = (I.asDiagonal() * w0).squaredNorm();
+        for (double t : {0.5, 7.0, 60.0}) {
+            const Vec3 w = rigid::free_body_exact_omega(mo, t);
+            CHECK_NEAR(rigid::rotational_energy(I, w), E0, 1e-14 * E0);
+            CHECK_NEAR((I.asDiagonal() * w).squaredNorm(), M0, 1e-14 * M0);
+        }
+    }
 
 }  // TEST_SUITE
 
@@ -185,64 +184,63 @@ double nu_squared_from_jacobian(const Vec3& I, int axis, double spin) {
 }  // namespace
 
 TEST_SUITE("ch03_free_body") {
-
-TEST_CASE("wobble_frequency_squared: equals -lambda^2 of Euler's equation linearised about the spin") {
-    for (int n = 0; n < 30; ++n) {
-        const Vec3 I = random_moments();
-        const int axis = n % 3;
-        const double spin = checks::uniform(-3, 3);
-        CAPTURE(I.transpose());
-        CAPTURE(axis);
-        CAPTURE(spin);
-        const double expected = nu_squared_from_jacobian(I, axis, spin);
-        CHECK_NEAR(rigid::wobble_frequency_squared(I, axis, spin), expected, 1e-10 * spin * spin);
+    TEST_CASE("wobble_frequency_squared: equals -lambda^2 of Euler's equation linearised about the spin") {
+        for (int n = 0; n < 30; ++n) {
+            const Vec3 I = random_moments();
+            const int axis = n % 3;
+            const double spin = checks::uniform(-3, 3);
+            CAPTURE(I.transpose());
+            CAPTURE(axis);
+            CAPTURE(spin);
+            const double expected = nu_squared_from_jacobian(I, axis, spin);
+            CHECK_NEAR(rigid::wobble_frequency_squared(I, axis, spin), expected, 1e-10 * spin * spin);
+        }
     }
-}
 
-TEST_CASE("wobble_frequency_squared: stable about the largest and smallest axes and unstable about the middle one") {
-    const Vec3 I(1.0, 2.0, 3.0);
-    CHECK(rigid::wobble_frequency_squared(I, 0, 1.0) > 0.1);
-    CHECK(rigid::wobble_frequency_squared(I, 2, 1.0) > 0.1);
-    CHECK(rigid::wobble_frequency_squared(I, 1, 1.0) < -0.1);
-    // A disturbance about the middle axis grows like exp(sqrt(-nu^2) t): measured by integrating
-    // Euler's equation (RK4, dt = 1e-3) from a 1e-9 kick, between t = 10 and t = 20 (where the
-    // decaying mode is gone and the disturbance, near 1e-4, is still small).
-    Vec3 W(1e-9, 1.0, 0.0);
-    const double dt = 1e-3;
-    double at10 = 0;
-    for (int s = 1; s <= 20000; ++s) {
-        const Vec3 k1 = euler_written_out(I, W), k2 = euler_written_out(I, W + 0.5 * dt * k1),
-                   k3 = euler_written_out(I, W + 0.5 * dt * k2), k4 = euler_written_out(I, W + dt * k3);
-        W += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-        if (s == 10000) at10 = std::hypot(W(0), W(2));
+    TEST_CASE(
+        "wobble_frequency_squared: stable about the largest and smallest axes and unstable about the middle one") {
+        const Vec3 I(1.0, 2.0, 3.0);
+        CHECK(rigid::wobble_frequency_squared(I, 0, 1.0) > 0.1);
+        CHECK(rigid::wobble_frequency_squared(I, 2, 1.0) > 0.1);
+        CHECK(rigid::wobble_frequency_squared(I, 1, 1.0) < -0.1);
+        // A disturbance about the middle axis grows like exp(sqrt(-nu^2) t): measured by integrating
+        // Euler's equation (RK4, dt = 1e-3) from a 1e-9 kick, between t = 10 and t = 20 (where the
+        // decaying mode is gone and the disturbance, near 1e-4, is still small).
+        Vec3 W(1e-9, 1.0, 0.0);
+        const double dt = 1e-3;
+        double at10 = 0;
+        for (int s = 1; s <= 20000; ++s) {
+            const Vec3 k1 = euler_written_out(I, W), k2 = euler_written_out(I, W + 0.5 * dt * k1),
+                       k3 = euler_written_out(I, W + 0.5 * dt * k2), k4 = euler_written_out(I, W + dt * k3);
+            W += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+            if (s == 10000) at10 = std::hypot(W(0), W(2));
+        }
+        const double growth = std::log(std::hypot(W(0), W(2)) / at10) / 10.0;
+        CHECK_NEAR(std::sqrt(-rigid::wobble_frequency_squared(I, 1, 1.0)), growth, 1e-3);
     }
-    const double growth = std::log(std::hypot(W(0), W(2)) / at10) / 10.0;
-    CHECK_NEAR(std::sqrt(-rigid::wobble_frequency_squared(I, 1, 1.0)), growth, 1e-3);
-}
 
-TEST_CASE("wobble_frequency_squared: rejects moments that are no body or a bad axis or a non-finite spin") {
-    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 1, 3), 0, 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(-1, 2, 2), 0, 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 3, 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), -1, 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 1, nan_), std::invalid_argument);
-}
+    TEST_CASE("wobble_frequency_squared: rejects moments that are no body or a bad axis or a non-finite spin") {
+        CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 1, 3), 0, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(-1, 2, 2), 0, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 3, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), -1, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::wobble_frequency_squared(Vec3(1, 2, 2.5), 1, nan_), std::invalid_argument);
+    }
 
 }  // TEST_SUITE
 
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch03_free_body") {
+    TEST_CASE("rotational_energy: E = 3 for I = (2; 3; 4) and Omega = (1; 0; 1) in the worked example of Chapter 3") {
+        CHECK_NEAR(rigid::rotational_energy(Vec3(2, 3, 4), Vec3(1, 0, 1)), 3.0, 1e-15);
+    }
 
-TEST_CASE("rotational_energy: E = 3 for I = (2; 3; 4) and Omega = (1; 0; 1) in the worked example of Chapter 3") {
-    CHECK_NEAR(rigid::rotational_energy(Vec3(2, 3, 4), Vec3(1, 0, 1)), 3.0, 1e-15);
-}
+    TEST_CASE("angular_momentum_squared: M^2 = 20 in the worked example of Chapter 3") {
+        CHECK_NEAR(rigid::angular_momentum_squared(Vec3(2, 3, 4), Vec3(1, 0, 1)), 20.0, 1e-14);
+    }
 
-TEST_CASE("angular_momentum_squared: M^2 = 20 in the worked example of Chapter 3") {
-    CHECK_NEAR(rigid::angular_momentum_squared(Vec3(2, 3, 4), Vec3(1, 0, 1)), 20.0, 1e-14);
-}
-
-TEST_CASE("euler_rhs: dOmega/dt = (0; 2/3; 0) in the worked example of Chapter 3") {
-    CHECK_MAT_NEAR(rigid::euler_rhs(Vec3(2, 3, 4), Vec3(1, 0, 1)), Vec3(0, 2.0 / 3, 0), 1e-15);
-}
+    TEST_CASE("euler_rhs: dOmega/dt = (0; 2/3; 0) in the worked example of Chapter 3") {
+        CHECK_MAT_NEAR(rigid::euler_rhs(Vec3(2, 3, 4), Vec3(1, 0, 1)), Vec3(0, 2.0 / 3, 0), 1e-15);
+    }
 
 }  // TEST_SUITE

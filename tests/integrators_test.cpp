@@ -1,13 +1,14 @@
 // Graders for the student's fixed-step Runge-Kutta method (rigid/integrators.hpp), part of
 // Chapter 3. Each test cross-checks against a closed form: Taylor polynomials, exact
 // solutions of linear and polynomial equations, and the order of convergence.
+#include "rigid/integrators.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
 #include "checks.hpp"
-#include "rigid/integrators.hpp"
 
 using rigid::VecX;
 
@@ -21,106 +22,114 @@ VecX oscillator(double, const VecX& y) { return VecX{{y(1), -y(0)}}; }
 }  // namespace
 
 TEST_SUITE("ch03_free_body") {
-
-TEST_CASE("rk4_step: one step of y' = lambda y is the degree-4 Taylor polynomial of exp") {
-    // For a linear autonomous equation RK4 multiplies by 1 + z + z^2/2 + z^3/6 + z^4/24, z = lambda h.
-    for (double z : {0.1, -0.7, 1.3}) {
-        CAPTURE(z);
-        const double lambda = 2.0, h = z / lambda;
-        const VecX y = rigid::rk4_step([&](double, const VecX& x) { return VecX(lambda * x); }, 0.4, VecX{{3.0}}, h);
-        CHECK_NEAR(y(0), 3.0 * (1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24), 1e-14);
+    TEST_CASE("rk4_step: one step of y' = lambda y is the degree-4 Taylor polynomial of exp") {
+        // For a linear autonomous equation RK4 multiplies by 1 + z + z^2/2 + z^3/6 + z^4/24, z = lambda h.
+        for (double z : {0.1, -0.7, 1.3}) {
+            CAPTURE(z);
+            const double lambda = 2.0, h = z / lambda;
+            const VecX y =
+                rigid::rk4_step([&](double, const VecX& x) { return VecX(lambda * x); }, 0.4, VecX{{3.0}}, h);
+            CHECK_NEAR(y(0), 3.0 * (1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24), 1e-14);
+        }
     }
-}
 
-TEST_CASE("rk4_step: uses the time argument and is exact for y' = t^3") {
-    // Simpson's rule inside RK4 integrates cubics exactly: y(t + h) - y(t) = ((t+h)^4 - t^4) / 4.
-    const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
-    const double t = 0.7, h = 0.9;
-    const VecX y = rigid::rk4_step(f, t, VecX{{1.0}}, h);
-    CHECK_NEAR(y(0), 1.0 + (std::pow(t + h, 4) - std::pow(t, 4)) / 4, 1e-14);
-}
-
-TEST_CASE("rk4_step: the error of one step on the oscillator falls like h^5") {
-    double previous = 0;
-    for (double h : {0.2, 0.1, 0.05}) {
-        const VecX y = rigid::rk4_step(oscillator, 0.0, VecX{{1.0, 0.0}}, h);
-        const double err = std::hypot(y(0) - std::cos(h), y(1) + std::sin(h));
-        // Exact local error of RK4 here: |e^{ih} - sum_{k<=4} (ih)^k / k!| ~ h^5 / 120.
-        CHECK_NEAR(err, std::pow(h, 5) / 120, 0.05 * std::pow(h, 5) / 120);
-        if (previous > 0) CHECK_NEAR(previous / err, 32.0, 1.0);
-        previous = err;
+    TEST_CASE("rk4_step: uses the time argument and is exact for y' = t^3") {
+        // Simpson's rule inside RK4 integrates cubics exactly: y(t + h) - y(t) = ((t+h)^4 - t^4) / 4.
+        const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
+        const double t = 0.7, h = 0.9;
+        const VecX y = rigid::rk4_step(f, t, VecX{{1.0}}, h);
+        CHECK_NEAR(y(0), 1.0 + (std::pow(t + h, 4) - std::pow(t, 4)) / 4, 1e-14);
     }
-}
 
-TEST_CASE("integrate_rk4: lands exactly on every output time and counts its steps") {
-    const std::vector<double> times{0.0, 0.25, 1.0, 1.1, 3.0};
-    std::vector<double> seen;
-    const long steps = rigid::integrate_rk4(oscillator, VecX{{1.0, 0.0}}, times,
-                                            [&](double t, const VecX&) { seen.push_back(t); }, 0.1);
-    REQUIRE(seen.size() == times.size());
-    for (std::size_t i = 0; i < times.size(); ++i) CHECK(seen[i] == times[i]);
-    // ceil(0.25/0.1) + ceil(0.75/0.1) + ceil(0.1/0.1 + rounding) + ceil(1.9/0.1) steps.
-    long expected = 0;
-    for (std::size_t i = 1; i < times.size(); ++i) expected += long(std::ceil((times[i] - times[i - 1]) / 0.1));
-    CHECK(steps == expected);
-}
+    TEST_CASE("rk4_step: the error of one step on the oscillator falls like h^5") {
+        double previous = 0;
+        for (double h : {0.2, 0.1, 0.05}) {
+            const VecX y = rigid::rk4_step(oscillator, 0.0, VecX{{1.0, 0.0}}, h);
+            const double err = std::hypot(y(0) - std::cos(h), y(1) + std::sin(h));
+            // Exact local error of RK4 here: |e^{ih} - sum_{k<=4} (ih)^k / k!| ~ h^5 / 120.
+            CHECK_NEAR(err, std::pow(h, 5) / 120, 0.05 * std::pow(h, 5) / 120);
+            if (previous > 0) CHECK_NEAR(previous / err, 32.0, 1.0);
+            previous = err;
+        }
+    }
 
-TEST_CASE("integrate_rk4: converges with order 4 on the oscillator") {
-    auto error_at = [](double h) {
-        VecX last;
-        rigid::integrate_rk4(oscillator, VecX{{1.0, 0.0}}, {0.0, 10.0}, [&](double, const VecX& y) { last = y; }, h);
-        return std::hypot(last(0) - std::cos(10.0), last(1) + std::sin(10.0));
-    };
-    const double e1 = error_at(0.1), e2 = error_at(0.05);
-    CAPTURE(e1);
-    CAPTURE(e2);
-    // Global error ~ T h^4 / 120 for the oscillator: 10 * 1e-4 / 120 = 8.3e-6 at h = 0.1.
-    CHECK_NEAR(e1, 10 * std::pow(0.1, 4) / 120, 1e-6);
-    CHECK_NEAR(e1 / e2, 16.0, 0.5);
-}
+    TEST_CASE("integrate_rk4: lands exactly on every output time and counts its steps") {
+        const std::vector<double> times{0.0, 0.25, 1.0, 1.1, 3.0};
+        std::vector<double> seen;
+        const long steps = rigid::integrate_rk4(
+            oscillator, VecX{{1.0, 0.0}}, times, [&](double t, const VecX&) { seen.push_back(t); }, 0.1);
+        REQUIRE(seen.size() == times.size());
+        for (std::size_t i = 0; i < times.size(); ++i) CHECK(seen[i] == times[i]);
+        // ceil(0.25/0.1) + ceil(0.75/0.1) + ceil(0.1/0.1 + rounding) + ceil(1.9/0.1) steps.
+        long expected = 0;
+        for (std::size_t i = 1; i < times.size(); ++i) expected += long(std::ceil((times[i] - times[i - 1]) / 0.1));
+        CHECK(steps == expected);
+    }
 
-TEST_CASE("integrate_rk4: the first observation is the initial state itself") {
-    VecX first;
-    bool called = false;
-    rigid::integrate_rk4(oscillator, VecX{{0.3, -0.2}}, {2.0, 2.5}, [&](double, const VecX& y) {
-        if (!called) first = y;
-        called = true;
-    }, 0.1);
-    REQUIRE(called);
-    CHECK_MAT_NEAR(first, VecX({{0.3, -0.2}}), 0.0);
-}
+    TEST_CASE("integrate_rk4: converges with order 4 on the oscillator") {
+        auto error_at = [](double h) {
+            VecX last;
+            rigid::integrate_rk4(
+                oscillator, VecX{{1.0, 0.0}}, {0.0, 10.0}, [&](double, const VecX& y) { last = y; }, h);
+            return std::hypot(last(0) - std::cos(10.0), last(1) + std::sin(10.0));
+        };
+        const double e1 = error_at(0.1), e2 = error_at(0.05);
+        CAPTURE(e1);
+        CAPTURE(e2);
+        // Global error ~ T h^4 / 120 for the oscillator: 10 * 1e-4 / 120 = 8.3e-6 at h = 0.1.
+        CHECK_NEAR(e1, 10 * std::pow(0.1, 4) / 120, 1e-6);
+        CHECK_NEAR(e1 / e2, 16.0, 0.5);
+    }
 
-TEST_CASE("integrate_rk4: rejects a bad step or bad times or a non-finite state") {
-    const auto ignore = [](double, const VecX&) {};
-    const VecX y0{{1.0, 0.0}};
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, 0.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, -0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, nan_), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {1.0, 0.0}, ignore, 0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, nan_}, ignore, 0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {}, ignore, 0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX{{nan_, 0.0}}, {0.0, 1.0}, ignore, 0.1), std::invalid_argument);
-}
+    TEST_CASE("integrate_rk4: the first observation is the initial state itself") {
+        VecX first;
+        bool called = false;
+        rigid::integrate_rk4(
+            oscillator, VecX{{0.3, -0.2}}, {2.0, 2.5},
+            [&](double, const VecX& y) {
+                if (!called) first = y;
+                called = true;
+            },
+            0.1);
+        REQUIRE(called);
+        CHECK_MAT_NEAR(first, VecX({{0.3, -0.2}}), 0.0);
+    }
 
-TEST_CASE("integrate_rk4: gives every step its own time (y' = t^3 with many steps per output interval)") {
-    // RK4 on y' = f(t) is Simpson's rule, exact for cubics: y(3) = 1 + 3^4 / 4 whatever the step,
-    // provided step j of an interval is evaluated at t_k + j h (a wrong time breaks it at once).
-    const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
-    std::vector<double> seen;
-    rigid::integrate_rk4(f, VecX{{1.0}}, {0.0, 1.0, 3.0}, [&](double, const VecX& y) { seen.push_back(y(0)); }, 0.25);
-    REQUIRE(seen.size() == 3);
-    CHECK_NEAR(seen[1], 1.0 + 1.0 / 4, 1e-14);
-    CHECK_NEAR(seen[2], 1.0 + 81.0 / 4, 1e-13);
-}
+    TEST_CASE("integrate_rk4: rejects a bad step or bad times or a non-finite state") {
+        const auto ignore = [](double, const VecX&) {};
+        const VecX y0{{1.0, 0.0}};
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, 0.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, -0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, nan_), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {1.0, 0.0}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, nan_}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX{{nan_, 0.0}}, {0.0, 1.0}, ignore, 0.1),
+                        std::invalid_argument);
+    }
 
-TEST_CASE("integrate_rk4: rejects equal or decreasing output times anywhere and a lone non-finite time and an empty state") {
-    const auto ignore = [](double, const VecX&) {};
-    const VecX y0{{1.0, 0.0}};
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0, 1.0}, ignore, 0.1), std::invalid_argument);
-    // 2 < 3 comes after 1 < 3: the check must compare each time with the one just before it.
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0, 3.0, 2.0}, ignore, 0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {nan_}, ignore, 0.1), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX(), {0.0, 1.0}, ignore, 0.1), std::invalid_argument);
-}
+    TEST_CASE("integrate_rk4: gives every step its own time (y' = t^3 with many steps per output interval)") {
+        // RK4 on y' = f(t) is Simpson's rule, exact for cubics: y(3) = 1 + 3^4 / 4 whatever the step,
+        // provided step j of an interval is evaluated at t_k + j h (a wrong time breaks it at once).
+        const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
+        std::vector<double> seen;
+        rigid::integrate_rk4(
+            f, VecX{{1.0}}, {0.0, 1.0, 3.0}, [&](double, const VecX& y) { seen.push_back(y(0)); }, 0.25);
+        REQUIRE(seen.size() == 3);
+        CHECK_NEAR(seen[1], 1.0 + 1.0 / 4, 1e-14);
+        CHECK_NEAR(seen[2], 1.0 + 81.0 / 4, 1e-13);
+    }
+
+    TEST_CASE(
+        "integrate_rk4: rejects equal or decreasing output times anywhere and a lone non-finite time and an empty "
+        "state") {
+        const auto ignore = [](double, const VecX&) {};
+        const VecX y0{{1.0, 0.0}};
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0, 1.0}, ignore, 0.1), std::invalid_argument);
+        // 2 < 3 comes after 1 < 3: the check must compare each time with the one just before it.
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0, 3.0, 2.0}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {nan_}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX(), {0.0, 1.0}, ignore, 0.1), std::invalid_argument);
+    }
 
 }  // TEST_SUITE

@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
-
 #include <random>
 #include <sstream>
 
@@ -95,20 +94,21 @@ struct Verdicts : checks::Listener {
     }
     void log_assert(const doctest::AssertData& a) override {
         if (!a.m_failed) return;
-        nlohmann::json j{{"event", "assert"},
-                         {"file", a.m_file},
-                         {"line", a.m_line},
-                         {"type", doctest::assertString(a.m_at)},
-                         {"expression", a.m_expr},
-                         {"expanded", text(a.m_decomp)},
+        nlohmann::json j{{"event", "assert"},      {"file", a.m_file},
+                         {"line", a.m_line},       {"type", doctest::assertString(a.m_at)},
+                         {"expression", a.m_expr}, {"expanded", text(a.m_decomp)},
                          {"info", contexts()}};
         if (a.m_threw) j["threw"] = text(a.m_exception);
         if (a.m_exception_type) j["expected_exception"] = a.m_exception_type;
         emit(j);
     }
     void log_message(const doctest::MessageData& m) override {
-        emit({{"event", "message"}, {"file", m.m_file}, {"line", m.m_line}, {"text", text(m.m_string)},
-              {"severity", doctest::failureString(m.m_severity)}, {"info", contexts()}});
+        emit({{"event", "message"},
+              {"file", m.m_file},
+              {"line", m.m_line},
+              {"text", text(m.m_string)},
+              {"severity", doctest::failureString(m.m_severity)},
+              {"info", contexts()}});
     }
 };
 

@@ -1,11 +1,12 @@
 // Graders for Chapter 1, pure rotations (rigid/rotation.hpp). Each test name starts with the
 // exercise it grades; each cross-checks against an independent computation.
+#include "rigid/rotation.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "checks.hpp"
-#include "rigid/rotation.hpp"
 
 using rigid::Mat3;
 using rigid::Vec3;
@@ -35,242 +36,241 @@ Mat3 random_rotation() { return angle_axis(checks::random_unit(), checks::unifor
 }  // namespace
 
 TEST_SUITE("ch01_pure_rotations") {
-
-TEST_CASE("hat: hat(w) x equals the cross product w x x") {
-    for (int n = 0; n < 20; ++n) {
-        const Vec3 w = checks::random_vector(3), x = checks::random_vector(2);
-        CAPTURE(w.transpose());
-        CHECK_MAT_NEAR(rigid::hat(w) * x, w.cross(x), 1e-15);
-        CHECK_MAT_NEAR(rigid::hat(w).transpose(), -rigid::hat(w), 0.0);
+    TEST_CASE("hat: hat(w) x equals the cross product w x x") {
+        for (int n = 0; n < 20; ++n) {
+            const Vec3 w = checks::random_vector(3), x = checks::random_vector(2);
+            CAPTURE(w.transpose());
+            CHECK_MAT_NEAR(rigid::hat(w) * x, w.cross(x), 1e-15);
+            CHECK_MAT_NEAR(rigid::hat(w).transpose(), -rigid::hat(w), 0.0);
+        }
     }
-}
 
-TEST_CASE("hat: entries follow the Levi-Civita form hat_ij = -eps_ijk w_k") {
-    const Vec3 w(0.3, -1.7, 2.5);
-    CHECK_MAT_NEAR(rigid::hat(w), skew_ref(w), 0.0);
-}
-
-TEST_CASE("vee: recovers w from hat(w)") {
-    for (int n = 0; n < 20; ++n) {
-        const Vec3 w = checks::random_vector(5);
-        CAPTURE(w.transpose());
-        CHECK_MAT_NEAR(rigid::vee(skew_ref(w)), w, 1e-15);
+    TEST_CASE("hat: entries follow the Levi-Civita form hat_ij = -eps_ijk w_k") {
+        const Vec3 w(0.3, -1.7, 2.5);
+        CHECK_MAT_NEAR(rigid::hat(w), skew_ref(w), 0.0);
     }
-}
 
-TEST_CASE("vee: a general matrix gives Omega_k = -1/2 eps_kij W_ij as in (1.1.1)") {
-    Mat3 W;
-    W << 1.0, 2.0, -3.0, 0.5, -4.0, 7.0, 11.0, -2.5, 0.25;
-    Vec3 expected = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) expected(k) -= 0.5 * eps(k + 1, i + 1, j + 1) * W(i, j);
-    CHECK_MAT_NEAR(rigid::vee(W), expected, 1e-15);
-    // The symmetric part does not count.
-    CHECK_MAT_NEAR(rigid::vee(W + W.transpose()), Vec3::Zero(), 0.0);
-}
-
-TEST_CASE("rotation_about: agrees with Eigen::AngleAxisd for many axes and angles") {
-    for (int n = 0; n < 50; ++n) {
-        const Vec3 a = checks::random_unit();
-        const double phi = checks::uniform(-20, 20);
-        CAPTURE(a.transpose());
-        CAPTURE(phi);
-        CHECK_MAT_NEAR(rigid::rotation_about(a, phi), angle_axis(a, phi), 2e-14);
+    TEST_CASE("vee: recovers w from hat(w)") {
+        for (int n = 0; n < 20; ++n) {
+            const Vec3 w = checks::random_vector(5);
+            CAPTURE(w.transpose());
+            CHECK_MAT_NEAR(rigid::vee(skew_ref(w)), w, 1e-15);
+        }
     }
-}
 
-TEST_CASE("rotation_about: turns counter-clockwise seen from the tip of a") {
-    // About e3 by a quarter turn: e1 goes to e2, the rule of [P] after (1.1).
-    const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
-    CHECK_MAT_NEAR(R * Vec3::UnitX(), Vec3::UnitY(), 1e-15);
-    // Clockwise is the same angle about -a.
-    CHECK_MAT_NEAR(rigid::rotation_about(-Vec3::UnitZ(), pi / 2) * Vec3::UnitX(), -Vec3::UnitY(), 1e-15);
-}
-
-TEST_CASE("rotation_about: is orthogonal with det 1 and fixes its axis") {
-    for (int n = 0; n < 20; ++n) {
-        const Vec3 a = checks::random_unit();
-        const double phi = checks::uniform(-7, 7);
-        const Mat3 R = rigid::rotation_about(a, phi);
-        CAPTURE(phi);
-        CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 4e-14);
-        CHECK_NEAR(R.determinant(), 1.0, 1e-14);
-        CHECK_MAT_NEAR(R * a, a, 1e-14);
+    TEST_CASE("vee: a general matrix gives Omega_k = -1/2 eps_kij W_ij as in (1.1.1)") {
+        Mat3 W;
+        W << 1.0, 2.0, -3.0, 0.5, -4.0, 7.0, 11.0, -2.5, 0.25;
+        Vec3 expected = Vec3::Zero();
+        for (int k = 0; k < 3; ++k)
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) expected(k) -= 0.5 * eps(k + 1, i + 1, j + 1) * W(i, j);
+        CHECK_MAT_NEAR(rigid::vee(W), expected, 1e-15);
+        // The symmetric part does not count.
+        CHECK_MAT_NEAR(rigid::vee(W + W.transpose()), Vec3::Zero(), 0.0);
     }
-}
 
-TEST_CASE("rotation_about: normalises an axis of any finite non-zero length") {
-    const Vec3 a(1, 2, 2);  // |a| = 3
-    CHECK_MAT_NEAR(rigid::rotation_about(a, 0.8), angle_axis(a, 0.8), 1e-15);
-    // Tiny and huge axes, where a naive a / sqrt(a.a) underflows or overflows.
-    CHECK_MAT_NEAR(rigid::rotation_about(1e-200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
-    CHECK_MAT_NEAR(rigid::rotation_about(1e200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
-}
-
-TEST_CASE("rotation_about: rejects a zero or non-finite axis and a non-finite angle") {
-    CHECK_THROWS_AS(rigid::rotation_about(Vec3::Zero(), 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_about(Vec3(nan_, 0, 1), 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_about(Vec3(inf_, 0, 1), 1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), nan_), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), inf_), std::invalid_argument);
-    // The smallest normal axis is still an axis: this side of the threshold must work.
-    CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, 0, 1e-300), 1.0), angle_axis(Vec3::UnitZ(), 1.0), 1e-14);
-}
-
-TEST_CASE("body_angular_velocity: a pure rotation has the constant Omega = alpha a of (1.2)") {
-    const Vec3 a = Vec3(0.3, -0.4, 1.2).normalized();
-    const double alpha = 1.7;
-    for (double t : {0.0, 0.4, 2.0, 11.0}) {
-        CAPTURE(t);
-        const Mat3 R = angle_axis(a, alpha * t);  // not the student's rotation_about: it is graded on its own
-        // Exact derivative, d/dt R^a(alpha t) = alpha hat(a) R, written without the student's hat.
-        const Mat3 R_dot = alpha * angle_axis(a, pi / 2) * (R - a * a.transpose() * R);
-        CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), alpha * a, 1e-14);
-        // Central finite difference of R(t), step 1e-5: truncation ~ 1e-11, round-off ~ 1e-11.
-        const double h = 1e-5;
-        const Mat3 R_fd = (angle_axis(a, alpha * (t + h)) - angle_axis(a, alpha * (t - h))) / (2 * h);
-        CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_fd), alpha * a, 1e-8);
+    TEST_CASE("rotation_about: agrees with Eigen::AngleAxisd for many axes and angles") {
+        for (int n = 0; n < 50; ++n) {
+            const Vec3 a = checks::random_unit();
+            const double phi = checks::uniform(-20, 20);
+            CAPTURE(a.transpose());
+            CAPTURE(phi);
+            CHECK_MAT_NEAR(rigid::rotation_about(a, phi), angle_axis(a, phi), 2e-14);
+        }
     }
-}
 
-TEST_CASE("body_angular_velocity: returns Omega for R_dot = R hat(Omega) at any orientation") {
-    for (int n = 0; n < 10; ++n) {
+    TEST_CASE("rotation_about: turns counter-clockwise seen from the tip of a") {
+        // About e3 by a quarter turn: e1 goes to e2, the rule of [P] after (1.1).
+        const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
+        CHECK_MAT_NEAR(R * Vec3::UnitX(), Vec3::UnitY(), 1e-15);
+        // Clockwise is the same angle about -a.
+        CHECK_MAT_NEAR(rigid::rotation_about(-Vec3::UnitZ(), pi / 2) * Vec3::UnitX(), -Vec3::UnitY(), 1e-15);
+    }
+
+    TEST_CASE("rotation_about: is orthogonal with det 1 and fixes its axis") {
+        for (int n = 0; n < 20; ++n) {
+            const Vec3 a = checks::random_unit();
+            const double phi = checks::uniform(-7, 7);
+            const Mat3 R = rigid::rotation_about(a, phi);
+            CAPTURE(phi);
+            CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 4e-14);
+            CHECK_NEAR(R.determinant(), 1.0, 1e-14);
+            CHECK_MAT_NEAR(R * a, a, 1e-14);
+        }
+    }
+
+    TEST_CASE("rotation_about: normalises an axis of any finite non-zero length") {
+        const Vec3 a(1, 2, 2);  // |a| = 3
+        CHECK_MAT_NEAR(rigid::rotation_about(a, 0.8), angle_axis(a, 0.8), 1e-15);
+        // Tiny and huge axes, where a naive a / sqrt(a.a) underflows or overflows.
+        CHECK_MAT_NEAR(rigid::rotation_about(1e-200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
+        CHECK_MAT_NEAR(rigid::rotation_about(1e200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
+    }
+
+    TEST_CASE("rotation_about: rejects a zero or non-finite axis and a non-finite angle") {
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3::Zero(), 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3(nan_, 0, 1), 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3(inf_, 0, 1), 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), nan_), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), inf_), std::invalid_argument);
+        // The smallest normal axis is still an axis: this side of the threshold must work.
+        CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, 0, 1e-300), 1.0), angle_axis(Vec3::UnitZ(), 1.0), 1e-14);
+    }
+
+    TEST_CASE("body_angular_velocity: a pure rotation has the constant Omega = alpha a of (1.2)") {
+        const Vec3 a = Vec3(0.3, -0.4, 1.2).normalized();
+        const double alpha = 1.7;
+        for (double t : {0.0, 0.4, 2.0, 11.0}) {
+            CAPTURE(t);
+            const Mat3 R = angle_axis(a, alpha * t);  // not the student's rotation_about: it is graded on its own
+            // Exact derivative, d/dt R^a(alpha t) = alpha hat(a) R, written without the student's hat.
+            const Mat3 R_dot = alpha * angle_axis(a, pi / 2) * (R - a * a.transpose() * R);
+            CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), alpha * a, 1e-14);
+            // Central finite difference of R(t), step 1e-5: truncation ~ 1e-11, round-off ~ 1e-11.
+            const double h = 1e-5;
+            const Mat3 R_fd = (angle_axis(a, alpha * (t + h)) - angle_axis(a, alpha * (t - h))) / (2 * h);
+            CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_fd), alpha * a, 1e-8);
+        }
+    }
+
+    TEST_CASE("body_angular_velocity: returns Omega for R_dot = R hat(Omega) at any orientation") {
+        for (int n = 0; n < 10; ++n) {
+            const Mat3 R = random_rotation();
+            const Vec3 Omega = checks::random_vector(4);
+            const Mat3 R_dot = R * skew_ref(Omega);
+            CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Omega, 1e-13);
+        }
+    }
+
+    TEST_CASE("lab_angular_velocity: equals R Omega") {
+        for (int n = 0; n < 10; ++n) {
+            const Mat3 R = random_rotation();
+            const Vec3 Omega = checks::random_vector(4);
+            const Mat3 R_dot = R * skew_ref(Omega);
+            CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), R * Omega, 1e-13);
+        }
+        // And for a pure rotation omega = Omega = alpha a [P, after (1.2)].
+        const Vec3 a = Vec3(1, 1, 0).normalized();
+        const Mat3 R = angle_axis(a, 0.9);
+        const Mat3 R_dot = 2.0 * skew_ref(a) * R;
+        CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), 2.0 * a, 1e-15);
+    }
+
+    TEST_CASE("orthogonality_defect: is zero for rotations and measures the departure otherwise") {
+        CHECK_SMALL(rigid::orthogonality_defect(Mat3::Identity()), 0.0);
+        CHECK_SMALL(rigid::orthogonality_defect(random_rotation()), 1e-14);
+        // (1 + d) R has R^T R - 1 = (2d + d^2) 1, whose Frobenius norm is sqrt(3) (2d + d^2).
+        const double d = 1e-3;
+        CHECK_NEAR(rigid::orthogonality_defect((1 + d) * random_rotation()), std::sqrt(3.0) * (2 * d + d * d), 1e-14);
+    }
+
+    TEST_CASE("is_rotation: accepts rotations and rejects reflections and NaN") {
+        CHECK(rigid::is_rotation(Mat3::Identity()));
+        CHECK(rigid::is_rotation(random_rotation(), 1e-14));
+        CHECK_FALSE(rigid::is_rotation(-Mat3::Identity()));                            // det -1
+        CHECK_FALSE(rigid::is_rotation(Vec3(1, 1, -1).asDiagonal().toDenseMatrix()));  // a reflection
+        Mat3 bad = Mat3::Identity();
+        bad(1, 2) = nan_;
+        CHECK_FALSE(rigid::is_rotation(bad, 1.0));
+        CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), -1.0), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), nan_), std::invalid_argument);
+    }
+
+    TEST_CASE("is_rotation: decides both sides of the tolerance") {
         const Mat3 R = random_rotation();
-        const Vec3 Omega = checks::random_vector(4);
-        const Mat3 R_dot = R * skew_ref(Omega);
-        CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Omega, 1e-13);
+        const double d = 1e-8;
+        const Mat3 S = (1 + d) * R;  // defect sqrt(3) (2d + d^2) ~ 3.46e-8
+        const double defect = std::sqrt(3.0) * (2 * d + d * d);
+        CHECK(rigid::is_rotation(S, 1.01 * defect));
+        CHECK_FALSE(rigid::is_rotation(S, 0.99 * defect));
     }
-}
 
-TEST_CASE("lab_angular_velocity: equals R Omega") {
-    for (int n = 0; n < 10; ++n) {
+    TEST_CASE("axis_angle: inverts rotation_about from 0 to pi including near 0 and near pi") {
+        const Vec3 a = Vec3(0.2, -0.9, 0.4).normalized();
+        for (double phi : {1e-9, 1e-4, 0.3, pi / 2 - 1e-9, pi / 2, pi / 2 + 1e-9, 2.0, 3.0, pi - 1e-4, pi - 1e-9}) {
+            CAPTURE(phi);
+            const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
+            CHECK_NEAR(r.angle, phi, 4e-16 * pi + 1e-15 * phi);
+            // The axis is well defined (and must be accurate) once phi is not tiny.
+            if (phi > 1e-5) CHECK_MAT_NEAR(r.axis, a, 2e-12 / std::min(1.0, phi));
+            // Whatever the angle, axis and angle must rebuild R.
+            CHECK_MAT_NEAR(angle_axis(r.axis, r.angle), angle_axis(a, phi), 1e-14);
+        }
+    }
+
+    TEST_CASE("axis_angle: a half turn gives pi and the axis up to sign") {
+        const Vec3 a = Vec3(1, -2, 3).normalized();
+        const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, pi));
+        CHECK_NEAR(r.angle, pi, 1e-15);
+        CHECK_NEAR(std::abs(r.axis.dot(a)), 1.0, 1e-14);
+    }
+
+    TEST_CASE("axis_angle: the identity gives angle 0") {
+        const rigid::AxisAngle r = rigid::axis_angle(Mat3::Identity());
+        CHECK_SMALL(std::abs(r.angle), 0.0);
+        CHECK_NEAR(r.axis.norm(), 1.0, 1e-15);
+    }
+
+    TEST_CASE("axis_angle: rejects a matrix that is not a rotation") {
+        CHECK_THROWS_AS(rigid::axis_angle(1.01 * Mat3::Identity()), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::axis_angle(-Mat3::Identity()), std::invalid_argument);
+        Mat3 bad = Mat3::Identity();
+        bad(0, 0) = nan_;
+        CHECK_THROWS_AS(rigid::axis_angle(bad), std::invalid_argument);
+    }
+
+    TEST_CASE("compose: agrees with the product of the two matrices") {
+        for (int n = 0; n < 50; ++n) {
+            const rigid::AxisAngle first{checks::random_unit(), checks::uniform(-6, 6)};
+            const rigid::AxisAngle second{checks::random_unit(), checks::uniform(-6, 6)};
+            const rigid::AxisAngle c = rigid::compose(first, second);
+            CHECK_MAT_NEAR(angle_axis(c.axis, c.angle),
+                           angle_axis(second.axis, second.angle) * angle_axis(first.axis, first.angle), 1e-14);
+            CHECK(c.angle >= 0.0);
+            CHECK_LE(c.angle, pi);
+            CHECK_NEAR(c.axis.norm(), 1.0, 1e-14);
+        }
+    }
+
+    TEST_CASE("compose: the order matters as for matrices") {
+        const rigid::AxisAngle x{Vec3::UnitX(), pi / 2}, z{Vec3::UnitZ(), pi / 2};
+        const rigid::AxisAngle xz = rigid::compose(x, z), zx = rigid::compose(z, x);
+        // Both are 120-degree turns, about (1, 1, 1) and (1, -1, 1) respectively.
+        CHECK_NEAR(xz.angle, 2 * pi / 3, 1e-15);
+        CHECK_MAT_NEAR(xz.axis, Vec3(1, 1, 1).normalized(), 1e-14);
+        CHECK_NEAR(zx.angle, 2 * pi / 3, 1e-15);
+        CHECK_MAT_NEAR(zx.axis, Vec3(1, -1, 1).normalized(), 1e-14);
+    }
+
+    TEST_CASE("compose: a turn and its inverse give the identity and bad axes are rejected") {
+        const Vec3 a = Vec3(2, 1, -1);
+        const rigid::AxisAngle c = rigid::compose({a, 0.7}, {-a, 0.7});
+        CHECK_SMALL(std::abs(c.angle), 1e-15);
+        CHECK_THROWS_AS(rigid::compose({Vec3::Zero(), 1.0}, {a, 1.0}), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::compose({a, 1.0}, {a, nan_}), std::invalid_argument);
+    }
+
+    TEST_CASE("geodesic_angle: equals the rotation angle and keeps tiny angles") {
         const Mat3 R = random_rotation();
-        const Vec3 Omega = checks::random_vector(4);
-        const Mat3 R_dot = R * skew_ref(Omega);
-        CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), R * Omega, 1e-13);
+        const Vec3 a = checks::random_unit();
+        for (double phi : {1e-14, 1e-10, 1e-7, 0.5, 2.0, pi - 1e-6}) {
+            CAPTURE(phi);
+            // R and R R^a(phi) are phi apart; acos of the trace would return 0 below ~1e-8.
+            CHECK_NEAR(rigid::geodesic_angle(R, R * angle_axis(a, phi)), phi, 1e-15 + 1e-12 * phi);
+        }
     }
-    // And for a pure rotation omega = Omega = alpha a [P, after (1.2)].
-    const Vec3 a = Vec3(1, 1, 0).normalized();
-    const Mat3 R = angle_axis(a, 0.9);
-    const Mat3 R_dot = 2.0 * skew_ref(a) * R;
-    CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), 2.0 * a, 1e-15);
-}
 
-TEST_CASE("orthogonality_defect: is zero for rotations and measures the departure otherwise") {
-    CHECK_SMALL(rigid::orthogonality_defect(Mat3::Identity()), 0.0);
-    CHECK_SMALL(rigid::orthogonality_defect(random_rotation()), 1e-14);
-    // (1 + d) R has R^T R - 1 = (2d + d^2) 1, whose Frobenius norm is sqrt(3) (2d + d^2).
-    const double d = 1e-3;
-    CHECK_NEAR(rigid::orthogonality_defect((1 + d) * random_rotation()), std::sqrt(3.0) * (2 * d + d * d), 1e-14);
-}
-
-TEST_CASE("is_rotation: accepts rotations and rejects reflections and NaN") {
-    CHECK(rigid::is_rotation(Mat3::Identity()));
-    CHECK(rigid::is_rotation(random_rotation(), 1e-14));
-    CHECK_FALSE(rigid::is_rotation(-Mat3::Identity()));                  // det -1
-    CHECK_FALSE(rigid::is_rotation(Vec3(1, 1, -1).asDiagonal().toDenseMatrix()));  // a reflection
-    Mat3 bad = Mat3::Identity();
-    bad(1, 2) = nan_;
-    CHECK_FALSE(rigid::is_rotation(bad, 1.0));
-    CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), -1.0), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), nan_), std::invalid_argument);
-}
-
-TEST_CASE("is_rotation: decides both sides of the tolerance") {
-    const Mat3 R = random_rotation();
-    const double d = 1e-8;
-    const Mat3 S = (1 + d) * R;  // defect sqrt(3) (2d + d^2) ~ 3.46e-8
-    const double defect = std::sqrt(3.0) * (2 * d + d * d);
-    CHECK(rigid::is_rotation(S, 1.01 * defect));
-    CHECK_FALSE(rigid::is_rotation(S, 0.99 * defect));
-}
-
-TEST_CASE("axis_angle: inverts rotation_about from 0 to pi including near 0 and near pi") {
-    const Vec3 a = Vec3(0.2, -0.9, 0.4).normalized();
-    for (double phi : {1e-9, 1e-4, 0.3, pi / 2 - 1e-9, pi / 2, pi / 2 + 1e-9, 2.0, 3.0, pi - 1e-4, pi - 1e-9}) {
-        CAPTURE(phi);
-        const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
-        CHECK_NEAR(r.angle, phi, 4e-16 * pi + 1e-15 * phi);
-        // The axis is well defined (and must be accurate) once phi is not tiny.
-        if (phi > 1e-5) CHECK_MAT_NEAR(r.axis, a, 2e-12 / std::min(1.0, phi));
-        // Whatever the angle, axis and angle must rebuild R.
-        CHECK_MAT_NEAR(angle_axis(r.axis, r.angle), angle_axis(a, phi), 1e-14);
+    TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") {
+        const Mat3 R1 = random_rotation(), R2 = random_rotation(), Q = random_rotation();
+        const double d = rigid::geodesic_angle(R1, R2);
+        CHECK(d > 0.0);
+        CHECK_NEAR(rigid::geodesic_angle(R2, R1), d, 1e-14);
+        CHECK_NEAR(rigid::geodesic_angle(Q * R1, Q * R2), d, 1e-14);
+        Mat3 bad = R1;
+        bad(2, 2) = nan_;
+        CHECK(std::isnan(rigid::geodesic_angle(bad, R2)));
     }
-}
-
-TEST_CASE("axis_angle: a half turn gives pi and the axis up to sign") {
-    const Vec3 a = Vec3(1, -2, 3).normalized();
-    const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, pi));
-    CHECK_NEAR(r.angle, pi, 1e-15);
-    CHECK_NEAR(std::abs(r.axis.dot(a)), 1.0, 1e-14);
-}
-
-TEST_CASE("axis_angle: the identity gives angle 0") {
-    const rigid::AxisAngle r = rigid::axis_angle(Mat3::Identity());
-    CHECK_SMALL(std::abs(r.angle), 0.0);
-    CHECK_NEAR(r.axis.norm(), 1.0, 1e-15);
-}
-
-TEST_CASE("axis_angle: rejects a matrix that is not a rotation") {
-    CHECK_THROWS_AS(rigid::axis_angle(1.01 * Mat3::Identity()), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::axis_angle(-Mat3::Identity()), std::invalid_argument);
-    Mat3 bad = Mat3::Identity();
-    bad(0, 0) = nan_;
-    CHECK_THROWS_AS(rigid::axis_angle(bad), std::invalid_argument);
-}
-
-TEST_CASE("compose: agrees with the product of the two matrices") {
-    for (int n = 0; n < 50; ++n) {
-        const rigid::AxisAngle first{checks::random_unit(), checks::uniform(-6, 6)};
-        const rigid::AxisAngle second{checks::random_unit(), checks::uniform(-6, 6)};
-        const rigid::AxisAngle c = rigid::compose(first, second);
-        CHECK_MAT_NEAR(angle_axis(c.axis, c.angle),
-                       angle_axis(second.axis, second.angle) * angle_axis(first.axis, first.angle), 1e-14);
-        CHECK(c.angle >= 0.0);
-        CHECK_LE(c.angle, pi);
-        CHECK_NEAR(c.axis.norm(), 1.0, 1e-14);
-    }
-}
-
-TEST_CASE("compose: the order matters as for matrices") {
-    const rigid::AxisAngle x{Vec3::UnitX(), pi / 2}, z{Vec3::UnitZ(), pi / 2};
-    const rigid::AxisAngle xz = rigid::compose(x, z), zx = rigid::compose(z, x);
-    // Both are 120-degree turns, about (1, 1, 1) and (1, -1, 1) respectively.
-    CHECK_NEAR(xz.angle, 2 * pi / 3, 1e-15);
-    CHECK_MAT_NEAR(xz.axis, Vec3(1, 1, 1).normalized(), 1e-14);
-    CHECK_NEAR(zx.angle, 2 * pi / 3, 1e-15);
-    CHECK_MAT_NEAR(zx.axis, Vec3(1, -1, 1).normalized(), 1e-14);
-}
-
-TEST_CASE("compose: a turn and its inverse give the identity and bad axes are rejected") {
-    const Vec3 a = Vec3(2, 1, -1);
-    const rigid::AxisAngle c = rigid::compose({a, 0.7}, {-a, 0.7});
-    CHECK_SMALL(std::abs(c.angle), 1e-15);
-    CHECK_THROWS_AS(rigid::compose({Vec3::Zero(), 1.0}, {a, 1.0}), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::compose({a, 1.0}, {a, nan_}), std::invalid_argument);
-}
-
-TEST_CASE("geodesic_angle: equals the rotation angle and keeps tiny angles") {
-    const Mat3 R = random_rotation();
-    const Vec3 a = checks::random_unit();
-    for (double phi : {1e-14, 1e-10, 1e-7, 0.5, 2.0, pi - 1e-6}) {
-        CAPTURE(phi);
-        // R and R R^a(phi) are phi apart; acos of the trace would return 0 below ~1e-8.
-        CHECK_NEAR(rigid::geodesic_angle(R, R * angle_axis(a, phi)), phi, 1e-15 + 1e-12 * phi);
-    }
-}
-
-TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") {
-    const Mat3 R1 = random_rotation(), R2 = random_rotation(), Q = random_rotation();
-    const double d = rigid::geodesic_angle(R1, R2);
-    CHECK(d > 0.0);
-    CHECK_NEAR(rigid::geodesic_angle(R2, R1), d, 1e-14);
-    CHECK_NEAR(rigid::geodesic_angle(Q * R1, Q * R2), d, 1e-14);
-    Mat3 bad = R1;
-    bad(2, 2) = nan_;
-    CHECK(std::isnan(rigid::geodesic_angle(bad, R2)));
-}
 
 }  // TEST_SUITE
 
@@ -279,78 +279,77 @@ TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") 
 // between u and v (measured here with Eigen's AngleAxisd of the result), the smallest a
 // rotation taking one to the other can have.
 TEST_SUITE("ch01_pure_rotations") {
-
-TEST_CASE("rotation_between: a rotation that takes the direction of u to that of v by the angle between them") {
-    for (int n = 0; n < 50; ++n) {
-        const Vec3 u = checks::random_vector(3), v = checks::random_vector(2);
-        if (u.norm() < 0.1 || v.norm() < 0.1) continue;
-        CAPTURE(u.transpose());
-        CAPTURE(v.transpose());
-        const Mat3 R = rigid::rotation_between(u, v);
-        // Near opposite directions every ordinary formula (a half-way quaternion, Eigen's
-        // FromTwoVectors) loses digits like eps / (1 + cos): the tolerance allows 50 times that.
-        const double tol = 1e-14 * (1 + 1 / (1 + u.normalized().dot(v.normalized())));
-        CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), tol);
-        CHECK_NEAR(R.determinant(), 1.0, tol);
-        CHECK_MAT_NEAR(R * u.normalized(), v.normalized(), tol);
-        // The angle of R (Eigen's own axis-angle of the matrix) equals the angle between u and v,
-        // and its axis is orthogonal to both.
-        const Eigen::AngleAxisd aa(R);
-        const double between = std::atan2(u.cross(v).norm(), u.dot(v));
-        CHECK_NEAR(aa.angle(), between, 10 * tol);
-        CHECK_NEAR(aa.axis().dot(u.normalized()), 0.0, 1e-12);
-        CHECK_NEAR(aa.axis().dot(v.normalized()), 0.0, 1e-12);
+    TEST_CASE("rotation_between: a rotation that takes the direction of u to that of v by the angle between them") {
+        for (int n = 0; n < 50; ++n) {
+            const Vec3 u = checks::random_vector(3), v = checks::random_vector(2);
+            if (u.norm() < 0.1 || v.norm() < 0.1) continue;
+            CAPTURE(u.transpose());
+            CAPTURE(v.transpose());
+            const Mat3 R = rigid::rotation_between(u, v);
+            // Near opposite directions every ordinary formula (a half-way quaternion, Eigen's
+            // FromTwoVectors) loses digits like eps / (1 + cos): the tolerance allows 50 times that.
+            const double tol = 1e-14 * (1 + 1 / (1 + u.normalized().dot(v.normalized())));
+            CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), tol);
+            CHECK_NEAR(R.determinant(), 1.0, tol);
+            CHECK_MAT_NEAR(R * u.normalized(), v.normalized(), tol);
+            // The angle of R (Eigen's own axis-angle of the matrix) equals the angle between u and v,
+            // and its axis is orthogonal to both.
+            const Eigen::AngleAxisd aa(R);
+            const double between = std::atan2(u.cross(v).norm(), u.dot(v));
+            CHECK_NEAR(aa.angle(), between, 10 * tol);
+            CHECK_NEAR(aa.axis().dot(u.normalized()), 0.0, 1e-12);
+            CHECK_NEAR(aa.axis().dot(v.normalized()), 0.0, 1e-12);
+        }
     }
-}
 
-TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2 and the identity for parallel vectors") {
-    CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 2 * Vec3::UnitY()), angle_axis(Vec3::UnitZ(), pi / 2), 1e-15);
-    const Vec3 u(0.3, -1.2, 0.4);
-    CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
-    // 1e-9 rad apart: the angle keeps its digits (acos of the dot product would give 0 or 1.5e-8).
-    const Vec3 w = angle_axis(u.cross(Vec3::UnitZ()), 1e-9) * u;
-    CHECK_NEAR(Eigen::AngleAxisd(rigid::rotation_between(u, w)).angle(), 1e-9, 1e-15);
-}
-
-TEST_CASE("rotation_between: opposite vectors give a half turn about an axis orthogonal to u") {
-    for (const Vec3& u : {Vec3(1, 0, 0), Vec3(0, 0, -2), Vec3(0.3, -1.2, 0.4)}) {
-        CAPTURE(u.transpose());
-        const Mat3 R = rigid::rotation_between(u, -3 * u);
-        CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 1e-14);
-        CHECK_NEAR(R.determinant(), 1.0, 1e-14);
-        CHECK_MAT_NEAR(R * u, -u, 1e-14);
-        CHECK_NEAR(Eigen::AngleAxisd(R).angle(), pi, 1e-7);
+    TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2 and the identity for parallel vectors") {
+        CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 2 * Vec3::UnitY()), angle_axis(Vec3::UnitZ(), pi / 2),
+                       1e-15);
+        const Vec3 u(0.3, -1.2, 0.4);
+        CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
+        // 1e-9 rad apart: the angle keeps its digits (acos of the dot product would give 0 or 1.5e-8).
+        const Vec3 w = angle_axis(u.cross(Vec3::UnitZ()), 1e-9) * u;
+        CHECK_NEAR(Eigen::AngleAxisd(rigid::rotation_between(u, w)).angle(), 1e-9, 1e-15);
     }
-}
 
-TEST_CASE("rotation_between: a zero or non-finite vector is rejected") {
-    CHECK_THROWS_AS(rigid::rotation_between(Vec3::Zero(), Vec3::UnitX()), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3::Zero()), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_between(Vec3(nan_, 0, 1), Vec3::UnitX()), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3(inf_, 0, 1)), std::invalid_argument);
-}
+    TEST_CASE("rotation_between: opposite vectors give a half turn about an axis orthogonal to u") {
+        for (const Vec3& u : {Vec3(1, 0, 0), Vec3(0, 0, -2), Vec3(0.3, -1.2, 0.4)}) {
+            CAPTURE(u.transpose());
+            const Mat3 R = rigid::rotation_between(u, -3 * u);
+            CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 1e-14);
+            CHECK_NEAR(R.determinant(), 1.0, 1e-14);
+            CHECK_MAT_NEAR(R * u, -u, 1e-14);
+            CHECK_NEAR(Eigen::AngleAxisd(R).angle(), pi, 1e-7);
+        }
+    }
+
+    TEST_CASE("rotation_between: a zero or non-finite vector is rejected") {
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3::Zero(), Vec3::UnitX()), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3::Zero()), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3(nan_, 0, 1), Vec3::UnitX()), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitX(), Vec3(inf_, 0, 1)), std::invalid_argument);
+    }
 
 }  // TEST_SUITE
 
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch01_pure_rotations") {
-
-TEST_CASE("rotation_about: the quarter turn about e3 of the worked example of Chapter 1") {
-    Mat3 hand;
-    hand << 0, -1, 0, 1, 0, 0, 0, 0, 1;
-    const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
-    CHECK_MAT_NEAR(R, hand, 1e-15);
-    CHECK_MAT_NEAR(R * Vec3(1, 0, 2), Vec3(0, 1, 2), 1e-15);
-}
-
-TEST_CASE("body_angular_velocity: Omega = (0 0 2) at every instant in the worked example of Chapter 1") {
-    const double alpha = 2;
-    for (double t : {0.0, 0.3, pi / 4}) {
-        CAPTURE(t);
-        const Mat3 R = angle_axis(Vec3::UnitZ(), alpha * t);
-        const Mat3 R_dot = alpha * skew_ref(Vec3::UnitZ()) * R;
-        CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Vec3(0, 0, 2), 1e-15);
+    TEST_CASE("rotation_about: the quarter turn about e3 of the worked example of Chapter 1") {
+        Mat3 hand;
+        hand << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+        const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
+        CHECK_MAT_NEAR(R, hand, 1e-15);
+        CHECK_MAT_NEAR(R * Vec3(1, 0, 2), Vec3(0, 1, 2), 1e-15);
     }
-}
+
+    TEST_CASE("body_angular_velocity: Omega = (0 0 2) at every instant in the worked example of Chapter 1") {
+        const double alpha = 2;
+        for (double t : {0.0, 0.3, pi / 4}) {
+            CAPTURE(t);
+            const Mat3 R = angle_axis(Vec3::UnitZ(), alpha * t);
+            const Mat3 R_dot = alpha * skew_ref(Vec3::UnitZ()) * R;
+            CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Vec3(0, 0, 2), 1e-15);
+        }
+    }
 
 }  // TEST_SUITE

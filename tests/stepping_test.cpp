@@ -1,13 +1,14 @@
 // Checks of the provided fixed-step driver for steppers in increment form (rigid/stepping.hpp).
 // Not graders: nothing here is an exercise. The steppers used here are exact rotations built
 // with Eigen's AngleAxis, so every error is the driver's own.
+#include "rigid/stepping.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
 #include "checks.hpp"
-#include "rigid/stepping.hpp"
 
 using rigid::BodyState;
 using rigid::Increment;
@@ -46,8 +47,9 @@ TEST_CASE("apply: adds dOmega and multiplies R by 1 + E") {
 TEST_CASE("integrate_steps: lands exactly on every output time and counts its steps") {
     const std::vector<double> times{0.0, 0.25, 1.0, 1.1, 3.0};
     std::vector<double> seen;
-    const long steps = rigid::integrate_steps(spinning(), {Vec3(0, 0, 1), Mat3::Identity()}, times,
-                                              [&](double t, const BodyState&) { seen.push_back(t); }, 0.1);
+    const long steps = rigid::integrate_steps(
+        spinning(), {Vec3(0, 0, 1), Mat3::Identity()}, times, [&](double t, const BodyState&) { seen.push_back(t); },
+        0.1);
     REQUIRE(seen.size() == times.size());
     for (std::size_t i = 0; i < times.size(); ++i) CHECK(seen[i] == times[i]);
     long expected = 0;
@@ -60,7 +62,8 @@ TEST_CASE("integrate_steps: an exact stepper gives the exact motion with either 
     const Mat3 R0 = rot(Vec3(1, 0.5, -0.2));
     for (auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
         BodyState last;
-        rigid::integrate_steps(spinning(), {w, R0}, {0.0, 10.0}, [&](double, const BodyState& s) { last = s; }, 0.01, sum);
+        rigid::integrate_steps(
+            spinning(), {w, R0}, {0.0, 10.0}, [&](double, const BodyState& s) { last = s; }, 0.01, sum);
         CHECK_MAT_NEAR(last.R, R0 * rot(10.0 * w), 1e-13);
         CHECK_MAT_NEAR(last.Omega, w, 0.0);
     }
@@ -74,8 +77,8 @@ TEST_CASE("integrate_steps: compensated summation keeps R^T R = 1 where the plai
     double plain = 0, compensated = 0;
     for (auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
         BodyState last;
-        rigid::integrate_steps(spinning(), {w, Mat3::Identity()}, {0.0, 200.0},
-                               [&](double, const BodyState& s) { last = s; }, 0.001, sum);
+        rigid::integrate_steps(
+            spinning(), {w, Mat3::Identity()}, {0.0, 200.0}, [&](double, const BodyState& s) { last = s; }, 0.001, sum);
         (sum == rigid::Summation::plain ? plain : compensated) = defect(last.R);
     }
     CAPTURE(plain);

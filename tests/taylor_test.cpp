@@ -2,6 +2,8 @@
 // It is checked against the two closed forms of the workbook (the Grioli precession of
 // Chapter 5 and the elliptic free-body motion of Chapter 3), against itself at half the step,
 // and for its order of convergence.
+#include "rigid/taylor.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,7 +13,6 @@
 #include "rigid/free_body_exact.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/rotation.hpp"
-#include "rigid/taylor.hpp"
 
 using rigid::BodyState;
 using rigid::HeavyTop;
@@ -24,8 +25,8 @@ template <class Real>
 std::vector<rigid::TaylorState<Real>> run(const HeavyTop& top, const BodyState& s0, const std::vector<double>& times,
                                           double h, int order) {
     std::vector<rigid::TaylorState<Real>> out;
-    rigid::integrate_taylor<Real>(top, s0, times, [&](double, const rigid::TaylorState<Real>& s) { out.push_back(s); }, h,
-                                  order);
+    rigid::integrate_taylor<Real>(
+        top, s0, times, [&](double, const rigid::TaylorState<Real>& s) { out.push_back(s); }, h, order);
     return out;
 }
 
@@ -81,7 +82,8 @@ TEST_CASE("integrate_taylor: the error of degree N falls like h^N") {
 TEST_CASE("integrate_taylor: in long double it agrees with itself at half the step to 5e-17") {
     const std::vector<double> times = rigid::linspace(0, 50, 5);
     const BodyState s0{free_Omega0, Mat3::Identity()};
-    const auto a = run<long double>(free_body, s0, times, 0.1, 24), b = run<long double>(free_body, s0, times, 0.05, 24);
+    const auto a = run<long double>(free_body, s0, times, 0.1, 24),
+               b = run<long double>(free_body, s0, times, 0.05, 24);
     const auto d = run<double>(free_body, s0, times, 0.1, 24);
     long double worst = 0, worst_double = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {
@@ -102,7 +104,7 @@ TEST_CASE("integrate_taylor: rejects bad settings or times or state") {
     CHECK_THROWS_AS(rigid::integrate_taylor<double>(free_body, s0, {0.0, 1.0}, ignore, 0.1, 0), std::invalid_argument);
     CHECK_THROWS_AS(rigid::integrate_taylor<double>(free_body, s0, {0.0, 1.0}, ignore, 0.1, 61), std::invalid_argument);
     CHECK_THROWS_AS(rigid::integrate_taylor<double>(free_body, s0, {1.0, 0.0}, ignore, 0.1, 10), std::invalid_argument);
-    CHECK_THROWS_AS(rigid::integrate_taylor<double>(free_body, {Vec3(nan, 0, 0), Mat3::Identity()}, {0.0, 1.0}, ignore,
-                                                    0.1, 10),
-                    std::invalid_argument);
+    CHECK_THROWS_AS(
+        rigid::integrate_taylor<double>(free_body, {Vec3(nan, 0, 0), Mat3::Identity()}, {0.0, 1.0}, ignore, 0.1, 10),
+        std::invalid_argument);
 }

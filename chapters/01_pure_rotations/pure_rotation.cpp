@@ -4,13 +4,13 @@
 // circles its corners trace. Checked against an independent reference: Eigen::AngleAxisd
 // for every rotated corner, and the two facts that make the paths circles about a (the
 // height along a and the distance from the axis stay constant).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "figure.hpp"
 #include "motion.hpp"
@@ -69,11 +69,7 @@ struct Turn {
 constexpr int samples = 360;
 
 Turn compute(const Params& p) {
-    Turn turn{p.axis.normalized(),
-              2 * std::numbers::pi / p.alpha,
-              box_corners(box_centre, box_half),
-              {},
-              0};
+    Turn turn{p.axis.normalized(), 2 * std::numbers::pi / p.alpha, box_corners(box_centre, box_half), {}, 0};
     turn.path.resize(turn.corners.size());
     auto rotate_all = [&] {
         for (int k = 0; k <= samples; ++k) {

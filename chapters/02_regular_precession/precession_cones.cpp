@@ -5,13 +5,13 @@
 // cone (the cone of Omega(t) about a, carried by the body, i.e. R(t*) Omega(s) for all s)
 // touches it along omega(t*). The scene checks omega(t) against finite differences of R(t),
 // and the two constants of the space cone: |omega| and (b, omega) = beta + alpha (a, b).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "common.hpp"
 #include "figure.hpp"

@@ -9,8 +9,8 @@
 #include <gsl/gsl_sf_elljac.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -54,7 +54,8 @@ void declare(kit::Options& opts, Params& p) {
     opts.vector("I", &p.I, "principal moments (distinct; the middle one is the unstable axis)",
                 kit::components_between(1e-3, 1e3))
         .real("spin", &p.spin, "Omega about the middle axis", kit::between(1e-3, 1e3))
-        .real("delta", &p.delta, "perturbation of the other two components (at most spin / 10)", kit::between(1e-9, 1e3))
+        .real("delta", &p.delta, "perturbation of the other two components (at most spin / 10)",
+              kit::between(1e-9, 1e3))
         .real("T", &p.T, "time span", kit::between(1e-3, 1e6))
         .real("h", &p.h, "step of the student's RK4 (at most T / 10)", kit::between(1e-9, 1e3))
         .real("tol", &p.tol, "rk8pd tolerance", kit::between(1e-14, 1e-3));
@@ -89,8 +90,8 @@ Setup setup(const kit::Options& o, const Params& p) {
     // runs at tolerance 1e-14 over at most T).
     const double phase = spin * T, rk8pd_steps_per_radian = 0.25 * std::pow(1e-12 / tol, 1.0 / 8);
     kit::require_budget(o, {3 * T / h, 1e-6, "RK4 steps", "--T, --h"});
-    kit::require_budget(o, {3 * phase * rk8pd_steps_per_radian + 6 * phase * 0.4, 4e-6, "rk8pd steps",
-                            "--T, --spin, --tol"});
+    kit::require_budget(
+        o, {3 * phase * rk8pd_steps_per_radian + 6 * phase * 0.4, 4e-6, "rk8pd steps", "--T, --spin, --tol"});
     return {p, lo, mid, hi};
 }
 
@@ -152,14 +153,14 @@ void report_flip(kit::Report& report, const Flip& f) {
     for (std::size_t k = 1; k < comps.size(); ++k)
         if ((comps[k][4] > 0) != (comps[k - 1][4] > 0)) ++flips;
     if (!(sep.m_c <= 1e-12))
-        throw kit::CheckFailed("the separatrix motion has m_c = " + short_number(sep.m_c) + "; it must be 0 (to 1e-12)");
+        throw kit::CheckFailed("the separatrix motion has m_c = " + short_number(sep.m_c) +
+                               "; it must be 0 (to 1e-12)");
     if (flips > 1)
         throw kit::CheckFailed("the curve labelled 'separatrix: one flip only' flips " + std::to_string(flips) +
                                " times in [0, T]: its start, rounded to double, has m_c = " + short_number(sep.m_c) +
                                " instead of 0, hence a period of " + short_number(sep.period) +
                                "; take --T below about " + short_number(0.75 * sep.period));
     report.add("separatrix_flips", static_cast<long>(flips), "sign changes of its middle component in [0, T]");
-
 }
 
 // 2. Ever closer to the separatrix.
@@ -174,20 +175,20 @@ void report_approach(kit::Report& report, const Setup& u) {
         const double Tn = std::min(T, 0.75 * mo.period);  // past the first flip
         // (a) The reference against itself: restart from Omega(Tn / 2).
         const auto re = rigid::free_body_motion(I, rigid::free_body_exact_omega(mo, Tn / 2));
-        const double self = (rigid::free_body_exact_omega(re, Tn / 2) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+        const double self =
+            (rigid::free_body_exact_omega(re, Tn / 2) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
         worst_ref = std::max(worst_ref, self);
         // (b) With GSL's elljac(u, m): 1 - m formed inside.
-        const double gsl_diff =
-            (omega_with_gsl_elljac(mo, Tn) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
+        const double gsl_diff = (omega_with_gsl_elljac(mo, Tn) - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
         // (c) rk8pd against the reference at Tn.
         const scene3::Run run = scene3::integrate(I, mo.Omega0, {0.0, Tn}, "rk8pd", 1e-14);
         const double e = (run.Omega.back() - rigid::free_body_exact_omega(mo, Tn)).norm() / spin;
         table.push_back({d, mo.m_c, mo.period, Tn, self, gsl_diff, e, std::numeric_limits<double>::epsilon() / mo.m_c});
     }
     report.add("reference_self_consistency", worst_ref, "max over the table of the restart difference / spin");
-    report.table("approach", {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
-                       table);
-
+    report.table("approach",
+                 {"delta", "m_c", "period", "t", "ref_restart", "gsl_elljac_diff", "rk8pd_1e-14_error", "eps_over_m_c"},
+                 table);
 }
 
 void draw_flip(kit::Scene& scene, const Flip& f) {
@@ -208,15 +209,16 @@ void draw_flip(kit::Scene& scene, const Flip& f) {
     kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
     fig << "set title 'Spin about the middle axis, perturbed by δ: the body flips (exact motion)'\n"
            "set xlabel 't'\nset ylabel 'components of Ω'\nset key outside right\n"
-           "set yrange [" + std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) + "]\n"
-           "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
-           "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
-           "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
-           "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
-           "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
+           "set yrange [" +
+               std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) +
+               "]\n"
+               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
+               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
+               "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
+               "'-' using 1:2 with lines ls 9 lw 2 title 'separatrix: one flip only', "
+               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
     fig.data(c1).data(c2).data(c3).data(c4).data(c5);
     fig.finish();
-
 }
 
 void draw_error(kit::Scene& scene, const Setup& u, const Flip& f) {
@@ -226,8 +228,11 @@ void draw_error(kit::Scene& scene, const Setup& u, const Flip& f) {
     fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
           "set xlabel 't'\nset ylabel '|Ω − Ω_{exact}| / |Ω(0)|'\n"
           "set logscale y\nset format y '10^{%L}'\nset key top left\n"
-          "plot '-' using 1:2 with lines ls 1 title " + kit::quoted("rk8pd, tol " + short_number(tol)) + ", "
-          "'-' using 1:2 with lines ls 2 title " + kit::quoted("student RK4, h = " + short_number(h)) + "\n";
+          "plot '-' using 1:2 with lines ls 1 title " +
+              kit::quoted("rk8pd, tol " + short_number(tol)) +
+              ", "
+              "'-' using 1:2 with lines ls 2 title " +
+              kit::quoted("student RK4, h = " + short_number(h)) + "\n";
     std::vector<std::vector<double>> a, b;
     for (const auto& r : err_rows) {
         a.push_back({r[0], r[1]});
@@ -262,7 +267,8 @@ void write_flip_motion(kit::Scene& scene, const std::string& file, const Setup& 
 int main(int argc, char** argv) {
     Params p;
     std::string motion_file;
-    kit::Options opts("dzhanibekov", "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
+    kit::Options opts("dzhanibekov",
+                      "Chapter 3: the Dzhanibekov flip near the separatrix, and the exact reference there");
     declare(opts, p);
     opts.file("motion", &motion_file, kit::motion_help);
     return kit::run(argc, argv, opts, [&p, &motion_file](const kit::Options& o, kit::Scene& scene) {

@@ -6,21 +6,21 @@
 // an integration of the Euler-Poisson equations (3.1)-(3.2), drawn as points, on top of the
 // curves of R^b(sigma alpha t) R^a(sigma alpha t) R0. The error is the largest distance
 // between the two, over both senses.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "common.hpp"
 #include "figure.hpp"
+#include "motion.hpp"
 #include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
-#include "motion.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
 

@@ -39,8 +39,15 @@ Mat3 diag(double a, double b, double c) { return Vec3(a, b, c).asDiagonal().toDe
 Scenario grioli(const std::string& name, const std::string& title, const rigid::Moments& m, double periods) {
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
     const double P = 2 * std::numbers::pi / g.alpha;
-    Scenario sc{name, title, rigid::grioli_top(m, g), rigid::grioli_initial_state(g), periods * P, 10,
-                g.alpha * std::sqrt(2.0), {}, "Theorem 1 (Chapter 5)"};
+    Scenario sc{name,
+                title,
+                rigid::grioli_top(m, g),
+                rigid::grioli_initial_state(g),
+                periods * P,
+                10,
+                g.alpha * std::sqrt(2.0),
+                {},
+                "Theorem 1 (Chapter 5)"};
     sc.exact = [g](const std::vector<double>& times) {
         std::vector<BodyState> out;
         for (double t : times) out.push_back({rigid::grioli_angular_velocity(g, t), rigid::grioli_rotation(g, t)});
@@ -51,13 +58,21 @@ Scenario grioli(const std::string& name, const std::string& title, const rigid::
 
 // A free body (f = 0) with R(0) = 1, and its exact motion through elliptic functions (Chapter 3).
 Scenario free_body(const std::string& name, const std::string& title, const Vec3& I, const Vec3& Omega0, double T) {
-    Scenario sc{name, title, {I.asDiagonal().toDenseMatrix(), 0.0, Vec3::UnitZ(), Vec3::UnitX()},
-                {Omega0, Mat3::Identity()}, T, 10, Omega0.norm(), {}, "elliptic functions (Chapter 3)"};
+    Scenario sc{name,
+                title,
+                {I.asDiagonal().toDenseMatrix(), 0.0, Vec3::UnitZ(), Vec3::UnitX()},
+                {Omega0, Mat3::Identity()},
+                T,
+                10,
+                Omega0.norm(),
+                {},
+                "elliptic functions (Chapter 3)"};
     const rigid::FreeBodyMotion motion = rigid::free_body_motion(I, Omega0);
     sc.exact = [motion](const std::vector<double>& times) {
         const std::vector<Mat3> R = rigid::free_body_exact_rotations(motion, times);
         std::vector<BodyState> out;
-        for (std::size_t i = 0; i < times.size(); ++i) out.push_back({rigid::free_body_exact_omega(motion, times[i]), R[i]});
+        for (std::size_t i = 0; i < times.size(); ++i)
+            out.push_back({rigid::free_body_exact_omega(motion, times[i]), R[i]});
         return out;
     };
     return sc;
@@ -73,19 +88,33 @@ std::vector<Scenario> scenarios() {
     s.push_back(grioli("grioli_100", "Grioli (1, 1.5, 2), 100 periods", rigid::moments(1, 1.5, 2), 100));
     s.push_back(grioli("grioli_near_symmetric", "Grioli, B - A = 1e-3 (1, 1.001, 2), 10 periods",
                        rigid::moments_from_gaps(1, 1e-3, 0.999), 10));
-    s.push_back(grioli("grioli_flat", "Grioli, flat A + B = C (1, 1.5, 2.5), 10 periods", rigid::moments(1, 1.5, 2.5), 10));
+    s.push_back(
+        grioli("grioli_flat", "Grioli, flat A + B = C (1, 1.5, 2.5), 10 periods", rigid::moments(1, 1.5, 2.5), 10));
     // A fast heavy top, spinning at 150 rad/s about its symmetry axis e2, held horizontal at
     // t = 0 (the gyroscope benchmark of Bruls and Cardona, inertia moved to the fixed point).
-    s.push_back({"fast_top", "fast top, spin 150 rad/s, t <= 2", {diag(15.234375, 0.46875, 15.234375), 15 * 9.81,
-                 Vec3::UnitZ(), Vec3::UnitY()}, {Vec3(0, 150, -4.61538), Mat3::Identity()}, 2.0, 10, 150.0, {}, ""});
+    s.push_back({"fast_top",
+                 "fast top, spin 150 rad/s, t <= 2",
+                 {diag(15.234375, 0.46875, 15.234375), 15 * 9.81, Vec3::UnitZ(), Vec3::UnitY()},
+                 {Vec3(0, 150, -4.61538), Mat3::Identity()},
+                 2.0,
+                 10,
+                 150.0,
+                 {},
+                 ""});
     // A free body started 1e-3 off its middle axis: it flips over twice in t <= 60.
     s.push_back(free_body("separatrix", "free body near the separatrix, I = (1, 2, 3), t <= 60", Vec3(1, 2, 3),
                           Vec3(1e-3, 1.0, 1e-3), 60));
     // A needle: one moment 1e-4, the centre of mass off its axis, so that the torque drives a
     // rotation about the needle at about sqrt(f / 1e-4) = 100 rad/s.
-    s.push_back({"needle", "needle I = (1e-4, 1, 1 + 1e-4), t <= 10", {diag(1e-4, 1, 1 + 1e-4), 1.0,
-                 Vec3(std::sin(0.3), 0, std::cos(0.3)), Vec3::UnitY()}, {Vec3(0, 0.2, 0.5), Mat3::Identity()}, 10.0, 10,
-                 100.0, {}, ""});
+    s.push_back({"needle",
+                 "needle I = (1e-4, 1, 1 + 1e-4), t <= 10",
+                 {diag(1e-4, 1, 1 + 1e-4), 1.0, Vec3(std::sin(0.3), 0, std::cos(0.3)), Vec3::UnitY()},
+                 {Vec3(0, 0.2, 0.5), Mat3::Identity()},
+                 10.0,
+                 10,
+                 100.0,
+                 {},
+                 ""});
     return s;
 }
 // end snippet
@@ -101,17 +130,24 @@ rigid::OdeRhs rhs_of(const HeavyTop& top) {
 Method gsl(const std::string& name, const std::string& label, const std::string& family, bool compensated_time = false,
            const std::string& id = "") {
     return {id.empty() ? name : id, label, family, Kind::tolerance,
-            [name, compensated_time](const Scenario& sc, const std::vector<double>& times, double tol, std::vector<BodyState>& out) {
+            [name, compensated_time](const Scenario& sc, const std::vector<double>& times, double tol,
+                                     std::vector<BodyState>& out) {
                 const HeavyTop& top = sc.top;
                 std::size_t i = 0;
                 rigid::OdeJacobian jac;
                 if (rigid::gsl_method_needs_jacobian(name))
-                    jac = [&top](double, const VecX& y) { return rigid::euler_poisson_jacobian(top, rigid::unpack(y)); };
-                const rigid::OdeSettings set{.method = name, .rel_tol = tol, .abs_tol = tol,
-                                             .first_step = std::min(1e-3, 0.01 / sc.omega), .compensated_time = compensated_time};
+                    jac = [&top](double, const VecX& y) {
+                        return rigid::euler_poisson_jacobian(top, rigid::unpack(y));
+                    };
+                const rigid::OdeSettings set{.method = name,
+                                             .rel_tol = tol,
+                                             .abs_tol = tol,
+                                             .first_step = std::min(1e-3, 0.01 / sc.omega),
+                                             .compensated_time = compensated_time};
                 const rigid::OdeRhsInPlace f = rigid::EulerPoissonInPlace(top);
-                return rigid::integrate_gsl(f, rigid::pack(sc.s0), times,
-                                            [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, set, jac)
+                return rigid::integrate_gsl(
+                           f, rigid::pack(sc.s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
+                           set, jac)
                     .rhs_calls;
             }};
 }
@@ -122,8 +158,8 @@ Method stepper(const std::string& name, const std::string& label, const std::str
     return {name, label, family, Kind::step,
             [=](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
                 std::size_t i = 0;
-                const long steps = rigid::integrate_steps(make(sc.top), sc.s0, times,
-                                                          [&](double, const BodyState& s) { out[i++] = s; }, h);
+                const long steps = rigid::integrate_steps(
+                    make(sc.top), sc.s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h);
                 return evaluations_per_step * steps;
             }};
 }
@@ -137,8 +173,9 @@ const std::vector<Method>& methods() {
         m.push_back({"rk4", "your RK4 (fixed h)", "explicit Runge-Kutta", Kind::step,
                      [](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
                          std::size_t i = 0;
-                         return 4 * rigid::integrate_rk4(rhs_of(sc.top), rigid::pack(sc.s0), times,
-                                                         [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
+                         return 4 * rigid::integrate_rk4(
+                                        rhs_of(sc.top), rigid::pack(sc.s0), times,
+                                        [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
                      }});
         m.push_back(gsl("rkf45", "GSL rkf45", "explicit Runge-Kutta"));
         m.push_back(gsl("rk8pd", "GSL rk8pd", "explicit Runge-Kutta"));
@@ -147,29 +184,29 @@ const std::vector<Method>& methods() {
         m.push_back(gsl("bsimp", "GSL bsimp", "implicit"));
         m.push_back(gsl("msbdf", "GSL msbdf (BDF)", "implicit"));
         m.push_back(stepper("rkmk4", "RKMK4 (fixed h)", "Lie group", 4, [](const HeavyTop& top) {
-            return rigid::IncrementStepper([&top](const BodyState& s, double h) { return rigid::rkmk4_step(top, s, h); });
+            return rigid::IncrementStepper(
+                [&top](const BodyState& s, double h) { return rigid::rkmk4_step(top, s, h); });
         }));
-        m.push_back(stepper("strang", "Strang splitting (fixed h)", "splitting", 2,
-                            [](const HeavyTop& top) {
-                                return rigid::IncrementStepper(
-                                    [&top](const BodyState& s, double h) { return rigid::strang_step(top, s, h); });
-                            }));
-        m.push_back(stepper("yoshida4", "Strang + triple jump (fixed h)", "splitting", 6,
-                            [](const HeavyTop& top) {
-                                const rigid::IncrementStepper strang = [&top](const BodyState& s, double h) {
-                                    return rigid::strang_step(top, s, h);
-                                };
-                                return rigid::IncrementStepper(
-                                    [strang](const BodyState& s, double h) { return rigid::triple_jump(strang, s, h); });
-                            }));
-        m.push_back({"taylor16", "Taylor, degree 16 (fixed h)", "Taylor series", Kind::step,
-                     [](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
-                         std::size_t i = 0;
-                         return 16 * rigid::integrate_taylor<double>(
-                                         sc.top, sc.s0, times,
-                                         [&](double, const rigid::TaylorState<double>& s) { out[i++] = rigid::to_double(s); },
-                                         h, 16);
-                     }});
+        m.push_back(stepper("strang", "Strang splitting (fixed h)", "splitting", 2, [](const HeavyTop& top) {
+            return rigid::IncrementStepper(
+                [&top](const BodyState& s, double h) { return rigid::strang_step(top, s, h); });
+        }));
+        m.push_back(stepper("yoshida4", "Strang + triple jump (fixed h)", "splitting", 6, [](const HeavyTop& top) {
+            const rigid::IncrementStepper strang = [&top](const BodyState& s, double h) {
+                return rigid::strang_step(top, s, h);
+            };
+            return rigid::IncrementStepper(
+                [strang](const BodyState& s, double h) { return rigid::triple_jump(strang, s, h); });
+        }));
+        m.push_back(
+            {"taylor16", "Taylor, degree 16 (fixed h)", "Taylor series", Kind::step,
+             [](const Scenario& sc, const std::vector<double>& times, double h, std::vector<BodyState>& out) {
+                 std::size_t i = 0;
+                 return 16 * rigid::integrate_taylor<double>(
+                                 sc.top, sc.s0, times,
+                                 [&](double, const rigid::TaylorState<double>& s) { out[i++] = rigid::to_double(s); },
+                                 h, 16);
+             }});
         // rk8pd again, driven by our own loop with the time kept as an exact two-part sum. Last in
         // the list: the book's keys by_method[key=100 * scenario + index] keep their methods.
         m.push_back(gsl("rk8pd", "GSL rk8pd, compensated time", "explicit Runge-Kutta", true, "rk8pd_ct"));
@@ -229,8 +266,8 @@ Reference reference(const Scenario& sc, bool self_check) {
     const auto run_long = [&](double h) {
         std::vector<LongState> out;
         out.reserve(times.size());
-        rigid::integrate_taylor<long double>(sc.top, sc.s0, times, [&](double, const LongState& s) { out.push_back(s); }, h,
-                                             r.order);
+        rigid::integrate_taylor<long double>(
+            sc.top, sc.s0, times, [&](double, const LongState& s) { out.push_back(s); }, h, r.order);
         return out;
     };
     std::vector<LongState> L;
@@ -241,15 +278,17 @@ Reference reference(const Scenario& sc, bool self_check) {
     if (self_check) {
         const std::vector<LongState> half = run_long(r.h / 2);
         r.self_difference = 0;
-        for (std::size_t i = 0; i < L.size(); ++i) r.self_difference = std::max(r.self_difference, difference(L[i], half[i], scale));
+        for (std::size_t i = 0; i < L.size(); ++i)
+            r.self_difference = std::max(r.self_difference, difference(L[i], half[i], scale));
     }
     if (sc.exact) r.exact_difference = measure(sc, r.states, sc.exact(times)).error;
     std::vector<LongState> D;
-    rigid::integrate_taylor<double>(sc.top, sc.s0, times,
-                                    [&](double, const rigid::TaylorState<double>& s) {
-                                        D.push_back({s.Omega.cast<long double>(), s.R.cast<long double>()});
-                                    },
-                                    r.h, r.order);
+    rigid::integrate_taylor<double>(
+        sc.top, sc.s0, times,
+        [&](double, const rigid::TaylorState<double>& s) {
+            D.push_back({s.Omega.cast<long double>(), s.R.cast<long double>()});
+        },
+        r.h, r.order);
     for (std::size_t i = 0; i < L.size(); ++i) r.double_floor = std::max(r.double_floor, difference(L[i], D[i], scale));
     // The conditioning: the same reference from an initial state changed by delta = 1e-9 (Omega by
     // delta |Omega| along a fixed direction, R by a turn of delta), in long double.
@@ -258,8 +297,8 @@ Reference reference(const Scenario& sc, bool self_check) {
     changed.Omega += delta * sc.s0.Omega.norm() * Vec3(0.48, -0.6, 0.64);
     changed.R = changed.R * Eigen::AngleAxisd(delta, Vec3(0.6, 0.8, 0)).toRotationMatrix();
     std::vector<LongState> C;
-    rigid::integrate_taylor<long double>(sc.top, changed, times, [&](double, const LongState& s) { C.push_back(s); }, r.h,
-                                         r.order);
+    rigid::integrate_taylor<long double>(
+        sc.top, changed, times, [&](double, const LongState& s) { C.push_back(s); }, r.h, r.order);
     for (std::size_t i = 0; i < L.size(); ++i) r.kappa = std::max(r.kappa, difference(L[i], C[i], scale) / delta);
     r.expected_floor = std::numeric_limits<double>::epsilon() * r.kappa * std::sqrt(sc.T / r.h);
     return r;
@@ -304,7 +343,8 @@ std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference
             // More repetitions for short runs, whose minimum is the most easily disturbed.
             const int repeats = first < 5e-3 && b.repeats > 1 ? std::max(b.repeats, 10) : b.repeats;
             if (first < b.max_run_s && repeats > 1) {
-                p.time_s = std::min(first, kit::min_time([&] { evaluations = meth.run(sc, times, param, out); }, repeats - 1));
+                p.time_s =
+                    std::min(first, kit::min_time([&] { evaluations = meth.run(sc, times, param, out); }, repeats - 1));
                 p.repeats = repeats;
             }
             p.evaluations = evaluations;
@@ -359,7 +399,8 @@ struct PlainTop {
     std::array<double, 3> fk, z0;    // f k and z(0)
 };
 
-__attribute__((noinline)) void plain_rhs(const PlainTop& p, const std::array<double, 12>& y, std::array<double, 12>& d) {
+__attribute__((noinline)) void plain_rhs(const PlainTop& p, const std::array<double, 12>& y,
+                                         std::array<double, 12>& d) {
     const double* W = &y[0];
     const double* R = &y[3];  // R_ij = R[3 i + j]
     double L[3], u[3], g[3];
@@ -399,11 +440,12 @@ RhsCost rhs_cost(const HeavyTop& top, const BodyState& s) {
     std::array<double, 12> ya{}, da{};
     for (int i = 0; i < 12; ++i) ya[i] = y(i);
     c.plain_ns = 1e9 * kit::min_time([&] {
-        for (long i = 0; i < n; ++i) {
-            plain_rhs(p, ya, da);
-            ya[0] += 1e-300 * da[0];
-        }
-    }) / n;
+                     for (long i = 0; i < n; ++i) {
+                         plain_rhs(p, ya, da);
+                         ya[0] += 1e-300 * da[0];
+                     }
+                 }) /
+                 n;
     // Agreement, on 1000 random states: the largest difference of the three results, relative
     // to the size of dy/dt.
     std::mt19937_64 rng(7);

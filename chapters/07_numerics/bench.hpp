@@ -25,7 +25,7 @@ struct Scenario {
     HeavyTop top;
     BodyState s0;
     double T;
-    int outputs;   // the error is the largest over `outputs` equally spaced times in (0, T]
+    int outputs;  // the error is the largest over `outputs` equally spaced times in (0, T]
     double omega;
     // The closed-form motion at the given times, where there is one (empty otherwise).
     std::function<std::vector<BodyState>(const std::vector<double>&)> exact;
@@ -51,7 +51,8 @@ enum class Kind { step, tolerance };
 struct Method {
     std::string name, label, family;
     Kind kind;
-    std::function<long(const Scenario&, const std::vector<double>& times, double param, std::vector<BodyState>& out)> run;
+    std::function<long(const Scenario&, const std::vector<double>& times, double param, std::vector<BodyState>& out)>
+        run;
 };
 // end snippet
 
@@ -78,16 +79,16 @@ Metrics measure(const Scenario& sc, const std::vector<BodyState>& reference, con
 // The reference of a scenario: the Taylor method of degree `order` in long double with the
 // step h = 0.1 / omega, from the same double-precision initial data as every method.
 struct Reference {
-    std::vector<BodyState> states;   // at the output times, rounded to double
+    std::vector<BodyState> states;  // at the output times, rounded to double
     double h = 0;
     int order = 24;
-    double time_s = 0;               // its run time
-    double self_difference = -1;     // largest difference from the same at h/2 (long double); -1: not run
-    double exact_difference = -1;    // largest difference from the closed form; -1: none
-    double double_floor = 0;         // the same steps in double, against it: the round-off floor
-    double kappa = 0;                // how much the flow magnifies a change of the initial state
-                                     // (largest over the outputs; measured with a change of 1e-9)
-    double expected_floor = 0;       // Brouwer's estimate for that floor: eps kappa sqrt(steps)
+    double time_s = 0;             // its run time
+    double self_difference = -1;   // largest difference from the same at h/2 (long double); -1: not run
+    double exact_difference = -1;  // largest difference from the closed form; -1: none
+    double double_floor = 0;       // the same steps in double, against it: the round-off floor
+    double kappa = 0;              // how much the flow magnifies a change of the initial state
+                                   // (largest over the outputs; measured with a change of 1e-9)
+    double expected_floor = 0;     // Brouwer's estimate for that floor: eps kappa sqrt(steps)
 };
 Reference reference(const Scenario& sc, bool self_check);
 // end snippet
@@ -95,26 +96,26 @@ Reference reference(const Scenario& sc, bool self_check);
 // How much work a sweep may do.
 struct Budget {
     std::string name;
-    int repeats;          // timing repetitions (the minimum is kept)
-    double max_run_s;     // a method's sweep stops after a run longer than this
-    double max_sweep_s;   // or when its runs, repetitions included, have taken longer than this
-    long max_steps;       // fixed-step sweeps stop before more steps than this
-    double step_factor;   // ratio of consecutive steps h
-    double tol_factor;    // ratio of consecutive tolerances
-    bool self_check;      // run the reference again at h/2
+    int repeats;         // timing repetitions (the minimum is kept)
+    double max_run_s;    // a method's sweep stops after a run longer than this
+    double max_sweep_s;  // or when its runs, repetitions included, have taken longer than this
+    long max_steps;      // fixed-step sweeps stop before more steps than this
+    double step_factor;  // ratio of consecutive steps h
+    double tol_factor;   // ratio of consecutive tolerances
+    bool self_check;     // run the reference again at h/2
 };
 Budget budget(const std::string& name);  // "smoke", "quick" or "full"
 
 // One point of a work-precision diagram.
 struct Point {
     std::string scenario, method;
-    double param = 0;        // h or tol
-    double time_s = 0;       // minimum over the repetitions
+    double param = 0;   // h or tol
+    double time_s = 0;  // minimum over the repetitions
     int repeats = 0;
     long evaluations = 0, steps = 0;
     Metrics m;
     bool failed = false;
-    std::string why;         // when failed
+    std::string why;  // when failed
 };
 
 // The sweep of one method on one scenario: parameters from loose to tight, each run timed

@@ -67,7 +67,8 @@ MatX monodromy(const rigid::Moments& m, rigid::Sense sense, double tol) {
     const MatX I = MatX::Identity(12, 12);
     VecX last;
     rigid::integrate_gsl(rhs, Eigen::Map<const VecX>(I.data(), 144), {0.0, 2 * pi / g.alpha},
-                         [&](double, const VecX& phi) { last = phi; }, {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+                         [&](double, const VecX& phi) { last = phi; },
+                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
     return Eigen::Map<const MatX>(last.data(), 12, 12);
 }
 // end snippet
@@ -91,7 +92,9 @@ MatX monodromy_by_differences(const rigid::Moments& m, double tol, double eps) {
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
     const rigid::HeavyTop top = rigid::grioli_top(m, g);
     const VecX y0 = rigid::pack(rigid::grioli_initial_state(g));
-    const rigid::OdeRhs rhs = [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); };
+    const rigid::OdeRhs rhs = [&](double, const VecX& y) {
+        return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
+    };
     const auto flow = [&](const VecX& y) {
         VecX last;
         rigid::integrate_gsl(rhs, y, {0.0, 2 * pi / g.alpha}, [&](double, const VecX& x) { last = x; },
@@ -133,7 +136,8 @@ struct Growth {
 std::pair<double, double> line_fit(const std::vector<double>& x, const std::vector<double>& y) {
     const double n = static_cast<double>(x.size());
     double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i], syy += y[i] * y[i];
+    for (std::size_t i = 0; i < x.size(); ++i)
+        sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i], syy += y[i] * y[i];
     const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
     return {cov / vx, vy > 0 ? cov * cov / (vx * vy) : 1.0};
 }
@@ -151,7 +155,9 @@ Growth perturbation(const rigid::Moments& m, double delta, int periods, double t
     start.Omega += delta * g.alpha * Vec3(0.48, -0.6, 0.64);
     const double P = 2 * pi / g.alpha;
     Growth gr;
-    const rigid::OdeRhs rhs = [&](double, const VecX& y) { return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y))); };
+    const rigid::OdeRhs rhs = [&](double, const VecX& y) {
+        return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
+    };
     rigid::integrate_gsl(rhs, rigid::pack(start), rigid::linspace(0, periods * P, periods),
                          [&](double t, const VecX& y) {
                              const BodyState s = rigid::unpack(y);
@@ -220,23 +226,26 @@ Map stability_map(int nu, int nv, double tol) {
     auto& unstable = M.unstable;
     auto &flat_unstable = M.flat_unstable, &flat_u_min = M.flat_u_min, &flat_u_max = M.flat_u_max;
     auto &edge_growth_B_A = M.edge_growth_B_A, &edge_growth_B_C = M.edge_growth_B_C;
-    M.time_s = kit::min_time([&] {
-        map.clear();
-        for (int j = 0; j < nv; ++j) {
-            const double v = (j + 1.0) / nv;  // up to the flat bodies, v = 1
-            for (int i = 0; i < nu; ++i) {
-                const double u = (i + 0.5) / nu;
-                const Floquet f = floquet(monodromy(shape(u, v), rigid::Sense::ccw, tol));
-                map.push_back({u, v, f.growth, f.rotation});
-                if (f.growth > worst) worst = f.growth, worst_u = u, worst_v = v;
+    M.time_s = kit::min_time(
+        [&] {
+            map.clear();
+            for (int j = 0; j < nv; ++j) {
+                const double v = (j + 1.0) / nv;  // up to the flat bodies, v = 1
+                for (int i = 0; i < nu; ++i) {
+                    const double u = (i + 0.5) / nu;
+                    const Floquet f = floquet(monodromy(shape(u, v), rigid::Sense::ccw, tol));
+                    map.push_back({u, v, f.growth, f.rotation});
+                    if (f.growth > worst) worst = f.growth, worst_u = u, worst_v = v;
+                }
+                map.push_back({});  // a blank row between rows of the grid
             }
-            map.push_back({});  // a blank row between rows of the grid
-        }
-    }, 1);
+        },
+        1);
     for (const auto& r : map) {
         if (r.empty()) continue;
         if (r[2] > 1e-4) ++unstable;
-        if (r[1] == 1.0 && r[2] > 1e-4) ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
+        if (r[1] == 1.0 && r[2] > 1e-4)
+            ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
         if (r[0] < 1.0 / nu) edge_growth_B_A = std::max(edge_growth_B_A, r[2]);
         if (r[0] > 1 - 1.0 / nu) edge_growth_B_C = std::max(edge_growth_B_C, r[2]);
     }
@@ -264,36 +273,41 @@ Perturbed perturbed_bodies(const rigid::Moments& tongue, int periods, double tol
     auto& curves = P.curves;
     auto &exponential_bodies = P.exponential_bodies, &linear_bodies = P.linear_bodies;
     P.bodies = {{"generic (1, 1.5, 2)", rigid::moments(1, 1.5, 2)},
-                                   {"near B = A (1, 1.001, 2)", rigid::moments_from_gaps(1, 1e-3, 0.999)},
-                                   {"near B = C (1, 1.999, 2)", rigid::moments_from_gaps(1, 0.999, 1e-3)},
-                                   {"flat (1, 1.5, 2.5)", rigid::moments(1, 1.5, 2.5)},
-                                   {"flat (1, 3, 4)", rigid::moments(1, 3, 4)},
-                                   {"in the tongue " + triple(tongue), tongue}};
-    P.time_s = kit::min_time([&] {
-        rows.clear(), curves.clear(), settled_rows.clear();
-        exponential_bodies = linear_bodies = 0;
-        for (std::size_t b = 0; b < bodies.size(); ++b) {
-            const Floquet f = floquet(monodromy(bodies[b].m, rigid::Sense::ccw, tol));
-            int exp_votes = 0;
-            for (double delta : {1e-8, 1e-6, 1e-4}) {
-                const Growth gr = perturbation(bodies[b].m, delta, periods, tol);
-                rows.push_back({double(b), delta, gr.power, gr.rate, gr.r2_power, gr.r2_rate, gr.exponential ? 1.0 : 0.0,
-                                f.growth, gr.deviation.back() / delta, gr.window_rate, gr.window_start, f.rotation});
-                exp_votes += gr.exponential;
-                std::vector<std::vector<double>> c;
-                for (std::size_t k = 1; k < gr.periods.size(); ++k) c.push_back({gr.periods[k], gr.deviation[k] / delta});
-                curves.push_back(c);
+                {"near B = A (1, 1.001, 2)", rigid::moments_from_gaps(1, 1e-3, 0.999)},
+                {"near B = C (1, 1.999, 2)", rigid::moments_from_gaps(1, 0.999, 1e-3)},
+                {"flat (1, 1.5, 2.5)", rigid::moments(1, 1.5, 2.5)},
+                {"flat (1, 3, 4)", rigid::moments(1, 3, 4)},
+                {"in the tongue " + triple(tongue), tongue}};
+    P.time_s = kit::min_time(
+        [&] {
+            rows.clear(), curves.clear(), settled_rows.clear();
+            exponential_bodies = linear_bodies = 0;
+            for (std::size_t b = 0; b < bodies.size(); ++b) {
+                const Floquet f = floquet(monodromy(bodies[b].m, rigid::Sense::ccw, tol));
+                int exp_votes = 0;
+                for (double delta : {1e-8, 1e-6, 1e-4}) {
+                    const Growth gr = perturbation(bodies[b].m, delta, periods, tol);
+                    rows.push_back({double(b), delta, gr.power, gr.rate, gr.r2_power, gr.r2_rate,
+                                    gr.exponential ? 1.0 : 0.0, f.growth, gr.deviation.back() / delta, gr.window_rate,
+                                    gr.window_start, f.rotation});
+                    exp_votes += gr.exponential;
+                    std::vector<std::vector<double>> c;
+                    for (std::size_t k = 1; k < gr.periods.size(); ++k)
+                        c.push_back({gr.periods[k], gr.deviation[k] / delta});
+                    curves.push_back(c);
+                }
+                (exp_votes >= 2 ? exponential_bodies : linear_bodies)++;
+                // An exponential growth's rate, read where it has settled: a smaller change (1e-10)
+                // at a tighter tolerance leaves the transient behind before d reaches 0.01.
+                Growth settled;
+                settled.window_rate = settled.window_start = settled.window_periods =
+                    std::numeric_limits<double>::quiet_NaN();
+                if (exp_votes >= 2) settled = perturbation(bodies[b].m, 1e-10, periods, std::min(tol, 1e-12));
+                settled_rows.push_back({double(b), settled.window_rate, settled.window_start, settled.window_periods,
+                                        f.growth, f.rotation});
             }
-            (exp_votes >= 2 ? exponential_bodies : linear_bodies)++;
-            // An exponential growth's rate, read where it has settled: a smaller change (1e-10)
-            // at a tighter tolerance leaves the transient behind before d reaches 0.01.
-            Growth settled;
-            settled.window_rate = settled.window_start = settled.window_periods = std::numeric_limits<double>::quiet_NaN();
-            if (exp_votes >= 2) settled = perturbation(bodies[b].m, 1e-10, periods, std::min(tol, 1e-12));
-            settled_rows.push_back({double(b), settled.window_rate, settled.window_start, settled.window_periods,
-                                    f.growth, f.rotation});
-        }
-    }, 1);
+        },
+        1);
 
     return P;
 }
@@ -322,9 +336,10 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
     const double edge_growth_B_A = M.edge_growth_B_A, edge_growth_B_C = M.edge_growth_B_C;
     const long unstable = M.unstable;
     const int linear_bodies = P.linear_bodies, exponential_bodies = P.exponential_bodies;
-    r.headline("largest |ln|mu|| difference between the Floquet multipliers from the variational "
-                          "equations and from differences of the flow (body in the tongue)",
-                          std::abs(f_var.growth - f_fd.growth), map_time + perturb_time);
+    r.headline(
+        "largest |ln|mu|| difference between the Floquet multipliers from the variational "
+        "equations and from differences of the flow (body in the tongue)",
+        std::abs(f_var.growth - f_fd.growth), map_time + perturb_time);
     r.add("grid_points", static_cast<long>(nu * nv));
     r.add("unstable_points", unstable, "growth per period > 1e-4");
     r.add("unstable_fraction", double(unstable) / (nu * nv));
@@ -340,7 +355,7 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
     r.add("tongue_B", tongue.B);
     r.add("tongue_C", tongue.C);
     r.add("tongue_multiplier_real", f_var.rotation > 0.49 ? -std::exp(f_var.growth) : std::exp(f_var.growth),
-                     "the largest multiplier (real and negative in the tongue)");
+          "the largest multiplier (real and negative in the tongue)");
     r.add("tongue_growth_by_differences", f_fd.growth);
     r.add("tongue_growth_clockwise", f_cw.growth);
     r.add("map_time_s", map_time);
@@ -358,7 +373,7 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
         r.add(k + "rotation_number", row[11], "arg(mu) / 2 pi of the multiplier pair farthest from 1");
         // Measured for the bodies that grow exponentially; null (not measured) for the others.
         r.add(k + "settled_rate", settled_rows[b][1],
-                         "growth per period over the last window before d = 0.01, delta = 1e-10");
+              "growth per period over the last window before d = 0.01, delta = 1e-10");
         r.add(k + "settled_window_start", settled_rows[b][2]);
         r.add(k + "settled_window_periods", settled_rows[b][3]);
         r.add(k + "settled_over_floquet", settled_rows[b][1] / settled_rows[b][4]);
@@ -366,16 +381,18 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
         r.add(k + "final_over_delta", row[8], "d(end) / delta, delta = 1e-6");
     }
     r.table("perturbations",
-                       {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
-                        "floquet_growth_per_period", "final_over_delta", "window_rate", "window_start", "rotation_number"},
-                       rows);
-    r.table("map", {"u", "v", "growth_per_period", "rotation_number"}, [&] {
-        std::vector<std::vector<double>> m;
-        for (const auto& row : map)
-            if (!row.empty()) m.push_back(row);
-        return m;
-    }(), false);
-
+            {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
+             "floquet_growth_per_period", "final_over_delta", "window_rate", "window_start", "rotation_number"},
+            rows);
+    r.table(
+        "map", {"u", "v", "growth_per_period", "rotation_number"},
+        [&] {
+            std::vector<std::vector<double>> m;
+            for (const auto& row : map)
+                if (!row.empty()) m.push_back(row);
+            return m;
+        }(),
+        false);
 }
 
 void draw_map(kit::Scene& scene, const Map& M, const Perturbed& P) {
@@ -390,7 +407,8 @@ void draw_map(kit::Scene& scene, const Map& M, const Perturbed& P) {
               "set palette defined (0 'white', 0.02 '#fde0c5', 0.3 '#f39c6b', 1 '#b2182b')\n"
               "set view map\nset key bottom left opaque font ',10'\n"
               "splot '-' using 1:2:3 with pm3d notitle, '-' using 1:2:(0) with points pt 7 ps 1.2 lc rgb '#0072B2' "
-              "title 'bodies of the perturbed runs', '-' using 1:2:(0):(sprintf('%d', $3)) with labels offset 0,1 font ',9' notitle\n";
+              "title 'bodies of the perturbed runs', '-' using 1:2:(0):(sprintf('%d', $3)) with labels offset 0,1 font "
+              "',9' notitle\n";
         fm.data(map);
         std::vector<std::vector<double>> pts;
         for (const Body& b : bodies) pts.push_back({(b.m.B - b.m.A) / (b.m.C - b.m.A), (b.m.C - b.m.A) / b.m.B});
@@ -410,7 +428,8 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
     if (fp.enabled()) {
         fp << "set multiplot layout 1, 2 title 'Grioli precession: deviation after a change δ of Ω(0), "
               "at whole periods'\nset xlabel 't / P'\nset format y '10^{%L}'\nset key top left font ',8' spacing 0.85\n"
-              "set logscale xy\nset title 'd / δ, log-log (δ = 10^{-8} solid, 10^{-6} dashed, 10^{-4} dotted); slope 1: linear'\n"
+              "set logscale xy\nset title 'd / δ, log-log (δ = 10^{-8} solid, 10^{-6} dashed, 10^{-4} dotted); slope "
+              "1: linear'\n"
               "set ylabel 'd / δ'\n";
         std::string plot = "plot ";
         std::vector<std::vector<std::vector<double>>> blocks;

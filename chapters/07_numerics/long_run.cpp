@@ -52,8 +52,10 @@ struct Params {
 };
 
 void declare(kit::Options& opts, Params& p) {
-    opts.integer("steps", &p.steps, "fixed steps of h = 1/16 (a power of two, so that every output time is a whole "
-                 "number of steps)", 1000, 20000000)
+    opts.integer("steps", &p.steps,
+                 "fixed steps of h = 1/16 (a power of two, so that every output time is a whole "
+                 "number of steps)",
+                 1000, 20000000)
         .real("tol", &p.tol, "tolerance of GSL rk8pd over the same time", kit::between(1e-14, 1e-3));
 }
 
@@ -109,10 +111,10 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
     const auto record = [&](Track& tr) {
         for (std::size_t i = 1; i < times.size(); ++i) {
             const BodyState& s = out[i];
-            tr.rows.push_back({times[i] / period, double(at[i]),
-                               std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
-                               std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
-                               rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
+            tr.rows.push_back(
+                {times[i] / period, double(at[i]), std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
+                 std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
+                 rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
         }
         tracks.push_back(tr);
     };
@@ -123,10 +125,13 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
     {
         Track tr{"rk4", "your RK4", "lc rgb '#000000'"};
         std::size_t i = 0;
-        tr.time_s = kit::min_time([&] {
-            i = 0;
-            rigid::integrate_rk4(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
-        }, 1);
+        tr.time_s = kit::min_time(
+            [&] {
+                i = 0;
+                rigid::integrate_rk4(
+                    rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
+            },
+            1);
         record(tr);
     }
     {
@@ -134,15 +139,22 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
         label << "GSL rk8pd, tol " << tol;
         Track tr{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
         std::size_t i = 0;
-        tr.time_s = kit::min_time([&] {
-            i = 0;
-            rigid::integrate_gsl(rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
-                                 {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
-        }, 1);
+        tr.time_s = kit::min_time(
+            [&] {
+                i = 0;
+                rigid::integrate_gsl(rhs, rigid::pack(s0), times,
+                                     [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
+                                     {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+            },
+            1);
         record(tr);
     }
-    const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) { return rigid::rkmk4_step(top, s, dt); };
-    const rigid::IncrementStepper strang = [&top](const BodyState& s, double dt) { return rigid::strang_step(top, s, dt); };
+    const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) {
+        return rigid::rkmk4_step(top, s, dt);
+    };
+    const rigid::IncrementStepper strang = [&top](const BodyState& s, double dt) {
+        return rigid::strang_step(top, s, dt);
+    };
     const rigid::IncrementStepper yoshida = [&strang](const BodyState& s, double dt) {
         return rigid::triple_jump(strang, s, dt);
     };
@@ -150,18 +162,22 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
         std::string name, label, colour;
         const rigid::IncrementStepper* step;
     };
-    for (const Geometric& gm : {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4},
-                                Geometric{"strang", "Strang", "#D55E00", &strang},
-                                Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
+    for (const Geometric& gm :
+         {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4}, Geometric{"strang", "Strang", "#D55E00", &strang},
+          Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
         for (const auto sum : {rigid::Summation::plain, rigid::Summation::compensated}) {
             const bool plain = sum == rigid::Summation::plain;
-            Track tr{gm.name + (plain ? "_plain" : "_compensated"), gm.label + (plain ? ", plain sum" : ", compensated"),
+            Track tr{gm.name + (plain ? "_plain" : "_compensated"),
+                     gm.label + (plain ? ", plain sum" : ", compensated"),
                      "lc rgb '" + gm.colour + "'" + (plain ? " dt 3" : "")};
             std::size_t i = 0;
-            tr.time_s = kit::min_time([&] {
-                i = 0;
-                rigid::integrate_steps(*gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
-            }, 1);
+            tr.time_s = kit::min_time(
+                [&] {
+                    i = 0;
+                    rigid::integrate_steps(
+                        *gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
+                },
+                1);
             record(tr);
         }
     }
@@ -187,13 +203,12 @@ void report(kit::Report& r, const Problem& pb, const std::vector<Track>& tracks)
     for (const Track& tr : tracks)
         if (tr.name.find("_compensated") != std::string::npos) geometric_time += tr.time_s;
     r.headline("largest ||R^T R - 1||_F after " + std::to_string(N) +
-                              " steps of RKMK4, Strang and its triple jump (compensated sums; target < 1e-13)",
-                          worst_orth, geometric_time);
+                   " steps of RKMK4, Strang and its triple jump (compensated sums; target < 1e-13)",
+               worst_orth, geometric_time);
     r.add("steps", N);
     r.add("h", h);
     r.add("periods", N * h / period);
     r.add("brouwer", std::numeric_limits<double>::epsilon() * std::sqrt(double(N)), "eps sqrt(steps)");
-
 }
 
 void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks) {
@@ -214,10 +229,12 @@ void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks
                                 {"angle between R and the exact R (rad)", "error"}};
     for (int p = 0; p < 4; ++p) {
         fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
-                   (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") + (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
-                            : "unset key\n");
+                   (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") +
+                   (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
+                           : "unset key\n");
         std::string plot = "plot ";
-        for (const Track& tr : tracks) plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
+        for (const Track& tr : tracks)
+            plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
         if (p == 2) {
             // Brouwer's law: a random walk of one rounding per step.
             plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'ε √(steps)', ";

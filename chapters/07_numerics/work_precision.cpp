@@ -37,7 +37,8 @@ public:
     }
     void run(const std::string& what) {
         if (!tty_) return;
-        std::cerr << "\r\033[K[" << index_ << "/" << count_ << "] " << what << "  (" << seconds() << " s)" << std::flush;
+        std::cerr << "\r\033[K[" << index_ << "/" << count_ << "] " << what << "  (" << seconds() << " s)"
+                  << std::flush;
     }
     void done() {
         if (tty_) std::cerr << "\r\033[K";
@@ -97,7 +98,8 @@ std::vector<Panel> panels(const std::vector<bench::Method>& methods) {
 std::string style(const Panel& panel, std::size_t i) {
     static const char* okabe_ito[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
     const std::size_t n = sizeof okabe_ito / sizeof okabe_ito[0];
-    return std::string("lc rgb '") + okabe_ito[i % n] + "' pt " + std::to_string(panel.markers[i % panel.markers.size()]);
+    return std::string("lc rgb '") + okabe_ito[i % n] + "' pt " +
+           std::to_string(panel.markers[i % panel.markers.size()]);
 }
 
 // The scene's parameters, bound to its options.
@@ -134,8 +136,9 @@ Sweeps run_sweeps(const kit::Options& o, const Params& prm) {
     const auto& methods = bench::methods();
     // The work: per scenario, the long-double reference and each method's sweep, which stops
     // at the floor or at the budget's time per sweep (measured: about 0.15 of it on average).
-    kit::require_budget(o, {double(all.size()), 0.3 + double(methods.size()) * (0.15 * b.max_sweep_s + 0.5 * b.max_run_s),
-                            "scenarios", "--sweep, --scenario"});
+    kit::require_budget(
+        o, {double(all.size()), 0.3 + double(methods.size()) * (0.15 * b.max_sweep_s + 0.5 * b.max_run_s), "scenarios",
+            "--sweep, --scenario"});
     auto& refs = w.refs;
     auto& points = w.points;
     Progress progress;
@@ -145,7 +148,8 @@ Sweeps run_sweeps(const kit::Options& o, const Params& prm) {
         progress.run(sc.name + "  long-double reference");
         refs[sc.name] = bench::reference(sc, b.self_check);
         for (const bench::Method& m : methods)
-            points[sc.name][m.name] = bench::sweep(sc, m, refs[sc.name], b, [&](const std::string& what) { progress.run(what); });
+            points[sc.name][m.name] =
+                bench::sweep(sc, m, refs[sc.name], b, [&](const std::string& what) { progress.run(what); });
     }
     progress.done();
 
@@ -180,10 +184,9 @@ void write_runs(kit::Scene& scene, const Sweeps& w) {
                                  p.m.err_Omega, p.m.dH, p.m.dL, p.m.orth});
             }
     write_file(scene, "work_precision.csv", csv.str());
-    scene.report.table("runs",
-                       {"scenario", "method", "h_or_tol", "time_s", "evaluations", "err_R", "err_Omega", "dH", "dL", "orth"},
-                       table, false);
-
+    scene.report.table(
+        "runs", {"scenario", "method", "h_or_tol", "time_s", "evaluations", "err_R", "err_Omega", "dH", "dL", "orth"},
+        table, false);
 }
 
 // The summary (work_precision.md and the report): per scenario and method, the best error,
@@ -209,12 +212,13 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
         const bench::Scenario& sc = all[si];
         const bench::Reference& ref = refs[sc.name];
         const double t_rk8pd = bench::time_to_reach(points[sc.name]["rk8pd"], target);
-        md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", "
-           << sci(ref.time_s, 2) << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
-           << "; against the closed form (" << (sc.exact ? sc.exact_name : "none") << "): "
-           << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
+        md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", " << sci(ref.time_s, 2)
+           << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
+           << "; against the closed form (" << (sc.exact ? sc.exact_name : "none")
+           << "): " << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
            << "; double-precision floor (the same steps in double): " << sci(ref.double_floor)
-           << " (expected eps kappa sqrt(steps) = " << sci(ref.expected_floor) << ", kappa = " << sci(ref.kappa) << ").\n\n"
+           << " (expected eps kappa sqrt(steps) = " << sci(ref.expected_floor) << ", kappa = " << sci(ref.kappa)
+           << ").\n\n"
            << "| method | best error | its run time (s) | time to " << sci(target, 0)
            << " (s) | rk8pd time / this | orthogonality | energy drift | momentum drift |\n"
            << "|---|---|---|---|---|---|---|---|\n";
@@ -241,7 +245,8 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
                 grioli_best = bp, grioli_best_method = methods[mi].label;
         }
         const std::string k = sc.name + "_";
-        scene.report.add(k + "reference_self_difference", ref.self_difference, "long-double reference vs itself at h/2");
+        scene.report.add(k + "reference_self_difference", ref.self_difference,
+                         "long-double reference vs itself at h/2");
         scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
         scene.report.add(k + "reference_time_s", ref.time_s);
         scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
@@ -259,8 +264,8 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
            << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
     }
     scene.report.table("by_method",
-                       {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s", "speedup_vs_rk8pd",
-                        "orthogonality", "energy_drift", "momentum_drift"},
+                       {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s",
+                        "speedup_vs_rk8pd", "orthogonality", "energy_drift", "momentum_drift"},
                        summary, false);
     md << "\nMethods: ";
     for (std::size_t mi = 0; mi < methods.size(); ++mi) md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
@@ -283,7 +288,8 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
         if (plain && compensated) {
             scene.report.add("rk8pd_floor_gain", plain->m.error / compensated->m.error,
                              "Grioli, 100 periods: rk8pd's best error, GSL's driver over compensated time");
-            scene.report.add("rk8pd_ct_over_floor", compensated->m.error / floor, "compensated rk8pd's best / the floor");
+            scene.report.add("rk8pd_ct_over_floor", compensated->m.error / floor,
+                             "compensated rk8pd's best / the floor");
         }
     } else {
         const bench::Point* any = nullptr;
@@ -306,7 +312,8 @@ void report_rhs_cost(kit::Scene& scene, const Sweeps& w) {
     scene.report.add("rhs_plain_ns", cost.plain_ns, "a hand-written loop on std::array, called directly (ns)");
     scene.report.add("rhs_fast_over_plain", cost.fast_ns / cost.plain_ns, "target: <= 1.5");
     scene.report.add("rhs_teaching_over_plain", cost.teaching_ns / cost.plain_ns);
-    scene.report.add("rhs_fast_vs_teaching", cost.fast_vs_teaching, "largest difference / max |dy/dt|, 1000 random states");
+    scene.report.add("rhs_fast_vs_teaching", cost.fast_vs_teaching,
+                     "largest difference / max |dy/dt|, 1000 random states");
     scene.report.add("rhs_fast_vs_plain", cost.fast_vs_plain, "the same against the hand-written loop");
     if (!(cost.fast_vs_teaching <= 1e-13 && cost.fast_vs_plain <= 1e-13))
         throw kit::CheckFailed("the fast right-hand side and euler_poisson_rhs (or the plain loop) disagree by " +
@@ -338,12 +345,15 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
                 if (!p.failed) t_min = std::min(t_min, p.time_s), t_max = std::max(t_max, p.time_s);
         if (t_max <= 0) continue;
         const double top = 1 - 50.0 / height_px, height = top - 55.0 / height_px;
-        fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") + "\n"
-               "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
-               "set xrange [" + sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) + "]\n"
-               "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
-               "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
+        fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") +
+                   "\n"
+                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+                   "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
+                   "set xrange [" +
+                   sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) +
+                   "]\n"
+                   "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
+                   "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
         const double floor = refs[sc.name].double_floor;
         for (int k = 0; k < n_panels; ++k) {
             const Panel& panel = by_family[k];
@@ -352,8 +362,9 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
             fig << "set tmargin at screen " + std::to_string(y1 - 30.0 / height_px) + "\nset bmargin at screen " +
                        std::to_string(y0 + 8.0 / height_px) + "\nset title " + kit::quoted(panel.title) +
                        " font ',11' offset 0, -0.4\n" +
-                       (k + 1 == n_panels ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
-                                          : "unset xlabel\nset format x ''\n");
+                       (k + 1 == n_panels
+                            ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
+                            : "unset xlabel\nset format x ''\n");
             std::string plot = "plot ";
             std::vector<std::vector<std::vector<double>>> blocks;
             auto curve = [&](const bench::Method& m) {
@@ -402,11 +413,13 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
                    "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
                    "set yrange [1e-17:10]\n";
             for (int panel = 0; panel < 3; ++panel) {
-                fig << (panel == 2 ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
-                                   : "unset key\n");
-                fig << (panel == 0   ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
-                        : panel == 1 ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
-                                     : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
+                fig << (panel == 2
+                            ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
+                            : "unset key\n");
+                fig << (panel == 0 ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
+                        : panel == 1
+                            ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
+                            : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
                 std::string plot = "plot ";
                 std::vector<std::vector<std::vector<double>>> blocks;
                 for (const Panel& family : by_family)
@@ -415,9 +428,13 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
                         std::vector<std::vector<double>> rows;
                         for (const bench::Point& p : points["grioli_100"][m.name])
                             if (!p.failed)
-                                rows.push_back({p.time_s, std::max(panel == 0 ? p.m.dH : panel == 1 ? p.m.dL : p.m.orth, 1e-17)});
+                                rows.push_back({p.time_s, std::max(panel == 0   ? p.m.dH
+                                                                   : panel == 1 ? p.m.dL
+                                                                                : p.m.orth,
+                                                                   1e-17)});
                         if (rows.empty()) continue;
-                        plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " + kit::quoted(m.name) + ", ";
+                        plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " +
+                                kit::quoted(m.name) + ", ";
                         blocks.push_back(rows);
                     }
                 plot.resize(plot.size() - 2);

@@ -76,10 +76,10 @@ Setup setup(const kit::Options& o, const Params& p) {
     u.period = u.omega_L != 0 ? 2 * pi / std::abs(u.omega_L) : u.T;
     // The work: 12 starting angles, (6.2) `repeats` times and beta = 0 once, over T; the
     // phase turned is (|omega_L| + beta |B| |S|) T radians a run.
-    kit::require_budget(o, {12.0 * (u.repeats + 1) * (std::abs(u.omega_L) + u.field.beta * u.Bn * u.s) * u.T + 200, 6e-5,
-                            "radians of phase", "--T, --B, --e_over_mc, --beta, --S, --repeats"});
-    kit::require_budget(o, {12.0 * (u.repeats + 1) * double(u.times.size()), 3e-6, "output times (all runs)",
-                            "--outputs, --repeats"});
+    kit::require_budget(o, {12.0 * (u.repeats + 1) * (std::abs(u.omega_L) + u.field.beta * u.Bn * u.s) * u.T + 200,
+                            6e-5, "radians of phase", "--T, --B, --e_over_mc, --beta, --S, --repeats"});
+    kit::require_budget(
+        o, {12.0 * (u.repeats + 1) * double(u.times.size()), 3e-6, "output times (all runs)", "--outputs, --repeats"});
     return u;
 }
 
@@ -98,7 +98,8 @@ Fan integrate_fan(const Setup& u) {
         const Vec3 S0 = u.start(deg);
         scene8::Run run, run0;
         f.run_time += kit::min_time(
-            [&] { run = scene8::integrate(rigid::spin_equations(u.field), vecx(S0), times, "rk8pd", 1e-12); }, u.repeats);
+            [&] { run = scene8::integrate(rigid::spin_equations(u.field), vecx(S0), times, "rk8pd", 1e-12); },
+            u.repeats);
         run0 = scene8::integrate(rigid::spin_equations(u.plain), vecx(S0), times, "rk8pd", 1e-12);
         const Vec3 n_plane = u.b.cross(S0).normalized();
         std::vector<std::vector<double>> c, c0;
@@ -111,7 +112,8 @@ Fan integrate_fan(const Setup& u) {
             // Undo the precession: what is left must stay in the plane of B and S0.
             const Vec3 back = rigid::rotation_about(u.b, -u.omega_L * times[i]) * S;
             f.off_plane = std::max(f.off_plane, std::abs(back.dot(n_plane)) / u.s);
-            const double th = rigid::spin_angle(u.field.B, S) * 180 / pi, th0 = rigid::spin_angle(u.field.B, P) * 180 / pi;
+            const double th = rigid::spin_angle(u.field.B, S) * 180 / pi,
+                         th0 = rigid::spin_angle(u.field.B, P) * 180 / pi;
             f.plain_angle_drift = std::max(f.plain_angle_drift, std::abs(th0 - deg));
             c.push_back({times[i], th});
             c0.push_back({times[i], th0});
@@ -123,12 +125,14 @@ Fan integrate_fan(const Setup& u) {
 }
 
 void report_fan(kit::Report& report, const Fan& f) {
-    report.headline("max |S(t) - S_exact(t)| / |S| over a fan of 12 initial angles, the student's (6.2) "
-                    "integrated by rk8pd at tol 1e-12",
-                    f.err, f.run_time);
+    report.headline(
+        "max |S(t) - S_exact(t)| / |S| over a fan of 12 initial angles, the student's (6.2) "
+        "integrated by rk8pd at tol 1e-12",
+        f.err, f.run_time);
     report.add("error_beta_0", f.err_plain, "the same for beta = 0 against the exact precession R^B(-(e/mc)|B|t) S0");
     report.add("norm_drift", f.norm_drift, "max | |S(t)| - |S(0)| | / |S|");
-    report.add("out_of_plane", f.off_plane, "max distance from the plane of B and S0 after undoing the precession, / |S|");
+    report.add("out_of_plane", f.off_plane,
+               "max distance from the plane of B and S0 after undoing the precession, / |S|");
     report.add("angle_drift_beta_0", f.plain_angle_drift, "degrees: beta = 0 keeps the angle");
     report.table("final_angles", {"start_deg", "final_deg", "final_deg_beta_0"}, f.finals);
 }
@@ -192,9 +196,10 @@ void draw_angles(kit::Scene& scene, const Setup& u, const Fan& f) {
     kit::Figure fig(scene, "spin_alignment.svg", 820, 520);
     if (!fig.enabled()) return;
     char head[200];
-    std::snprintf(head, sizeof head,
-                  "set title '(6.2) with β = %g, |{/:Bold B}| = %g, e/mc = %g: the angle between {/:Bold S} and {/:Bold B}'\n",
-                  u.field.beta, u.Bn, u.field.e_over_mc);
+    std::snprintf(
+        head, sizeof head,
+        "set title '(6.2) with β = %g, |{/:Bold B}| = %g, e/mc = %g: the angle between {/:Bold S} and {/:Bold B}'\n",
+        u.field.beta, u.Bn, u.field.e_over_mc);
     std::string cmd = std::string(head) +
                       "set xlabel 't'\nset ylabel 'angle (degrees)'\nset yrange [0:180]\nset ytics 30\n"
                       "set key outside right top font ',9'\nplot ";
@@ -202,7 +207,8 @@ void draw_angles(kit::Scene& scene, const Setup& u, const Fan& f) {
         cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j % 8 + 1) + " lw 2 " +
                (j == 0 ? "title '(6.2)'" : "notitle");
     for (std::size_t j = 0; j < f.degrees.size(); ++j)
-        cmd += ", '-' with lines ls " + std::to_string(j % 8 + 1) + " dt 2 lw 1 " + (j == 0 ? "title 'β = 0'" : "notitle");
+        cmd +=
+            ", '-' with lines ls " + std::to_string(j % 8 + 1) + " dt 2 lw 1 " + (j == 0 ? "title 'β = 0'" : "notitle");
     fig << cmd + "\n";
     for (const auto& c : f.angle_curves) fig.data(c);
     for (const auto& c : f.plain_curves) fig.data(c);
@@ -223,7 +229,8 @@ std::vector<std::vector<double>> sphere_grid() {
     for (int lon = 0; lon < 180; lon += 30) {
         for (int k = 0; k <= 72; ++k) {
             const double a = 2 * pi * k / 72;
-            sphere.push_back({std::cos(a) * std::cos(lon * pi / 180), std::cos(a) * std::sin(lon * pi / 180), std::sin(a)});
+            sphere.push_back(
+                {std::cos(a) * std::cos(lon * pi / 180), std::cos(a) * std::sin(lon * pi / 180), std::sin(a)});
         }
         sphere.push_back({});
         sphere.push_back({});
@@ -236,7 +243,8 @@ void draw_sphere(kit::Scene& scene, const Setup& u) {
     if (!fs.enabled()) return;
     // Draw in coordinates (e1, e2, b), so that B points up.
     auto local = [&](const Vec3& v) { return std::vector<double>{v.dot(u.e1), v.dot(u.e2), v.dot(u.b)}; };
-    fs << "set view 70, 25, 1.45, 1.45\nset view equal xyz\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\nset zrange [-1.05:1.45]\nunset border\nunset tics\nunset grid\n"
+    fs << "set view 70, 25, 1.45, 1.45\nset view equal xyz\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\nset "
+          "zrange [-1.05:1.45]\nunset border\nunset tics\nunset grid\n"
           "set xyplane 0\nset key at screen 0.99, 0.99 top right font ',9'\nset margins 0, 0, 0, 0\n"
           "set arrow from 0, 0, 1 to 0, 0, 1.4 head filled lw 3 lc rgb 'black'\n"
           "set label 'B' at 0.08, 0, 1.35 font ',14'\n";
@@ -245,15 +253,18 @@ void draw_sphere(kit::Scene& scene, const Setup& u) {
     std::vector<std::vector<std::vector<double>>> paths;
     for (double deg : shown) {
         const auto fine = rigid::linspace(0, u.T, 1200);
-        const scene8::Run run = scene8::integrate(rigid::spin_equations(u.field), vecx(u.start(deg)), fine, "rk8pd", 1e-12);
+        const scene8::Run run =
+            scene8::integrate(rigid::spin_equations(u.field), vecx(u.start(deg)), fine, "rk8pd", 1e-12);
         std::vector<std::vector<double>> p;
         for (const auto& y : run.y) p.push_back(local(vec(y) / u.s));
         paths.push_back(p);
     }
     std::vector<std::vector<double>> circle;  // beta = 0 from 60 degrees: one circle
-    for (int k = 0; k <= 120; ++k) circle.push_back(local(rigid::spin_exact(u.plain, u.start(60), u.period * k / 120) / u.s));
-    std::string cmd = "splot '-' with lines lc rgb '#cccccc' lw 0.7 notitle, "
-                      "'-' with lines lc rgb 'black' dt 2 lw 1.5 title 'β = 0 from 60°'";
+    for (int k = 0; k <= 120; ++k)
+        circle.push_back(local(rigid::spin_exact(u.plain, u.start(60), u.period * k / 120) / u.s));
+    std::string cmd =
+        "splot '-' with lines lc rgb '#cccccc' lw 0.7 notitle, "
+        "'-' with lines lc rgb 'black' dt 2 lw 1.5 title 'β = 0 from 60°'";
     for (std::size_t j = 0; j < shown.size(); ++j) {
         char t[64];
         std::snprintf(t, sizeof t, "(6.2) from %g degrees", shown[j]);

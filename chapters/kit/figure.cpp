@@ -77,7 +77,9 @@ Figure::Figure(Scene& scene, const std::string& file_name, int width, int height
     gp_ = std::make_unique<gnuplotio::Gnuplot>("gnuplot -d 2>'" + log_path_ + "'");
     // Greek and mathematical signs are written as UTF-8 (Ω, α, ‖·‖), never with gnuplot's
     // escape to the PostScript Symbol font, which a browser shows as Latin letters (W for Ω).
-    *gp_ << terminal << "\n" << "set encoding utf8\n" << "set output " << quoted(staged_path_) << "\n";
+    *gp_ << terminal << "\n"
+         << "set encoding utf8\n"
+         << "set output " << quoted(staged_path_) << "\n";
     const std::string style = WORKBOOK_STYLE_GP;
     if (!style.empty() && fs::exists(style)) *gp_ << "load " << quoted(style) << "\n";
 }
@@ -121,9 +123,12 @@ void Figure::finish() {
     fs::remove(log_path_, ec);
     const auto size = fs::exists(staged_path_) ? fs::file_size(staged_path_) : 0;
     std::string problem;
-    if (!stream_ok) problem = "gnuplot stopped reading its commands";
-    else if (gnuplot_failed(log)) problem = "gnuplot reported an error";
-    else if (size == 0) problem = "gnuplot wrote no file";
+    if (!stream_ok)
+        problem = "gnuplot stopped reading its commands";
+    else if (gnuplot_failed(log))
+        problem = "gnuplot reported an error";
+    else if (size == 0)
+        problem = "gnuplot wrote no file";
     else if (fs::path(final_path_).extension() == ".svg" && read_file(staged_path_).find("</svg>") == std::string::npos)
         problem = "the SVG file is truncated";
     if (!problem.empty()) {

@@ -17,8 +17,8 @@
 // update-figures; shown so, in its own style); never from a run with other options. Without
 // either, the committed text stays, marked as not measured (--strict: an error). A value the
 // run marks as not measured (null, -1, "not measured") is an error naming the key. Figures
-// come from --figures, else from <root>/figures, and are copied next to the pages. Every link is mapped to its page, and must exist, fragment
-// and all. Writes <out>/pages.txt for the browser test: file, kind, title per line.
+// come from --figures, else from <root>/figures, and are copied next to the pages. Every link is mapped to its page,
+// and must exist, fragment and all. Writes <out>/pages.txt for the browser test: file, kind, title per line.
 //
 // --check-figures: no source writes gnuplot's Symbol-font escape for a Greek letter, and every
 // SVG under the folders names a font that has every character of its text (fontconfig).
@@ -31,13 +31,13 @@
 // [P]", and at least three <details> blocks whose <summary> starts with "Predict:", each naming a
 // command to run. Every row of chapters/errata.md names a chapter and gives numbers.
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <deque>
-#include <optional>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -53,11 +53,20 @@ std::string html_escape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -106,7 +115,8 @@ fs::path contents_file;
 // The chapters' folders, in the order of the table of contents.
 std::vector<std::string> chapter_list(const fs::path& /*root*/) {
     if (contents_file.empty())
-        throw std::runtime_error("--contents <build>/contents.json is required (CMake writes it from chapters/README.md)");
+        throw std::runtime_error(
+            "--contents <build>/contents.json is required (CMake writes it from chapters/README.md)");
     std::vector<std::string> out;
     const auto contents = prose::read_json(contents_file);
     for (const auto& c : contents.at("chapters")) out.push_back(c.at("folder").get<std::string>());
@@ -172,7 +182,8 @@ private:
 };
 
 // Each required section present and in order, opening with Before you start, Learning objectives.
-void check_lesson_order(const std::vector<std::string>& h2s, const std::string& name, std::vector<std::string>& problems) {
+void check_lesson_order(const std::vector<std::string>& h2s, const std::string& name,
+                        std::vector<std::string>& problems) {
     const std::vector<std::string> required = {"Before you start", "Learning objectives", "Worked example", "Exercises",
                                                "Check your work",  "Going further",       "Checking [P]"};
     std::size_t at = 0;
@@ -183,9 +194,11 @@ void check_lesson_order(const std::vector<std::string>& h2s, const std::string& 
             continue;
         }
         const auto pos = static_cast<std::size_t>(it - h2s.begin());
-        if (pos < at) problems.push_back(name + ": '## " + h + "' comes too early (the order is: Before you start, "
-                                         "Learning objectives, ..., Worked example, ..., Exercises, Check your work, "
-                                         "Going further, Checking [P])");
+        if (pos < at)
+            problems.push_back(name + ": '## " + h +
+                               "' comes too early (the order is: Before you start, "
+                               "Learning objectives, ..., Worked example, ..., Exercises, Check your work, "
+                               "Going further, Checking [P])");
         at = std::max(at, pos);
     }
     if (h2s.empty() || h2s.front() != "Before you start")
@@ -200,7 +213,8 @@ void check_lesson(const fs::path& md, const std::string& name, std::vector<std::
     for (const auto& l : prose::read_lines(md)) s.line(l);
     check_lesson_order(s.h2s, name, problems);
     if (s.bullets < 3 || s.bullets > 6)
-        problems.push_back(name + ": its Learning objectives have " + std::to_string(s.bullets) + " bullets; 3 to 6, please");
+        problems.push_back(name + ": its Learning objectives have " + std::to_string(s.bullets) +
+                           " bullets; 3 to 6, please");
     if (!s.time_line) problems.push_back(name + ": its Learning objectives have no line starting '**Time:**'");
     if (s.predicts < 3)
         problems.push_back(name + ": has " + std::to_string(s.predicts) +
@@ -209,7 +223,8 @@ void check_lesson(const fs::path& md, const std::string& name, std::vector<std::
         problems.push_back(name + ": " + std::to_string(s.predicts - s.predicts_with_command) +
                            " of its Predict: blocks name no command to run (a build/... or cmake/workbook line)");
     if (!s.derivation) problems.push_back(name + ": its Exercises list no exercise marked '(derivation)'");
-    if (!s.names_file) problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
+    if (!s.names_file)
+        problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
     if (!s.check_cmd) problems.push_back(name + ": its Check your work does not use 'cmake/workbook check'");
     if (!s.scene_cmd) problems.push_back(name + ": its Check your work names no scene command (build/.../scenes/...)");
 }
@@ -342,7 +357,8 @@ std::set<unsigned> non_ascii(const std::string& text) {
         }
         const int n = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : 1;
         unsigned cp = c & (n == 3 ? 0x07 : n == 2 ? 0x0F : 0x1F);
-        for (int k = 1; k <= n && i + k < text.size(); ++k) cp = (cp << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+        for (int k = 1; k <= n && i + k < text.size(); ++k)
+            cp = (cp << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
         out.insert(cp);
         i += static_cast<std::size_t>(n) + 1;
     }
@@ -369,8 +385,9 @@ int check_escapes(const fs::path& root, const std::string& escape, std::vector<s
             const auto lines = prose::read_lines(e.path());
             for (std::size_t i = 0; i < lines.size(); ++i)
                 if (lines[i].find(escape) != std::string::npos)
-                    problems.push_back(r + ":" + std::to_string(i + 1) + ": gnuplot's " + escape +
-                                       " ...} escape: write the letter in UTF-8 (Ω, α, ε), which every figure's font has");
+                    problems.push_back(
+                        r + ":" + std::to_string(i + 1) + ": gnuplot's " + escape +
+                        " ...} escape: write the letter in UTF-8 (Ω, α, ε), which every figure's font has");
         }
     }
     return sources;
@@ -412,8 +429,9 @@ public:
         if (!covered_.count(key)) {
             if (!have_fc_) have_fc_ = run("fc-list --version").status == 0;
             if (!*have_fc_) return answered = false;
-            const Output o = run("fc-list " + shell_quote(":family=" + family + (charset.empty() ? "" : ":charset=" + charset)) +
-                                 " family");
+            const Output o =
+                run("fc-list " + shell_quote(":family=" + family + (charset.empty() ? "" : ":charset=" + charset)) +
+                    " family");
             covered_[key] = o.status == 0 && o.text.find_first_not_of(" \n") != std::string::npos;
         }
         return covered_[key];
@@ -429,7 +447,8 @@ private:
 bool check_svg(const fs::path& path, const std::string& escape, Fonts& fonts, std::vector<std::string>& problems) {
     const std::string svg = prose::read_text(path), name = path.string();
     const std::string text = svg_text(svg);
-    if (text.find(escape) != std::string::npos) problems.push_back(name + ": its text has gnuplot's " + escape + " ...} escape");
+    if (text.find(escape) != std::string::npos)
+        problems.push_back(name + ": its text has gnuplot's " + escape + " ...} escape");
     std::string charset;
     for (unsigned c : non_ascii(text)) {
         char hex[16];
@@ -483,11 +502,11 @@ int check_figures(const fs::path& root, const std::vector<fs::path>& trees) {
 // ------------------------------------------------------------------------------ rendering
 
 struct Page {
-    std::string file;    // in the book: "01_pure_rotations.html", "code/exercises/rotation.cpp.html"
-    fs::path source;     // the markdown or source file it comes from (absolute)
-    std::string kind;    // contents | chapter | page | code
-    std::string title;   // for <title> and the navigation
-    int chapter = 0;     // 1.. for chapters
+    std::string file;   // in the book: "01_pure_rotations.html", "code/exercises/rotation.cpp.html"
+    fs::path source;    // the markdown or source file it comes from (absolute)
+    std::string kind;   // contents | chapter | page | code
+    std::string title;  // for <title> and the navigation
+    int chapter = 0;    // 1.. for chapters
 };
 
 class Book {
@@ -507,7 +526,7 @@ public:
     int render();
 
 private:
-    std::string page_for(const fs::path& target);   // "" when not a page (yet)
+    std::string page_for(const fs::path& target);  // "" when not a page (yet)
     std::string map_link(const Page& page, const std::string& url, std::vector<std::string>& problems);
     std::string preprocess(const Page& page);
     std::string figure_html(const Page& page, const std::smatch& image, int figure);
@@ -580,8 +599,8 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
         if (url.size() > 1) fragments_.emplace_back(page.file, url, page.file, url.substr(1));
         return url;
     }
-    if (url.empty() || url.rfind("http://", 0) == 0 || url.rfind("https://", 0) == 0 ||
-        url.rfind("mailto:", 0) == 0 || url.rfind("data:", 0) == 0)
+    if (url.empty() || url.rfind("http://", 0) == 0 || url.rfind("https://", 0) == 0 || url.rfind("mailto:", 0) == 0 ||
+        url.rfind("data:", 0) == 0)
         return url;
     const auto hash = url.find('#');
     const std::string path = url.substr(0, hash), fragment = hash == std::string::npos ? "" : url.substr(hash + 1);
@@ -629,15 +648,15 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
 // A figure: numbered in its chapter, with its caption; one this build should have drawn but did
 // not shows the committed one, and says so.
 std::string Book::figure_html(const Page& page, const std::smatch& m, int figure) {
-    const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure)
-                                            : std::to_string(figure);
+    const std::string number =
+        page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure) : std::to_string(figure);
     const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
     std::string whose;
     if (key.rfind("figures/", 0) == 0 && own_run() && !fs::exists(figures_ / key.substr(8)))
         whose = " <em>(The committed figure: this build has not drawn it.)</em>";
-    return "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" +
-           html_escape(m[1]) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) +
-           whose + "</figcaption>\n</figure>\n";
+    return "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" + html_escape(m[1]) +
+           "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) + whose +
+           "</figcaption>\n</figure>\n";
 }
 
 // A motion for the viewer (cmake/book/motion_viewer.js): the JSON a scene wrote with --motion FILE,
@@ -645,8 +664,8 @@ std::string Book::figure_html(const Page& page, const std::smatch& m, int figure
 // caption (the scene, its parameters, its error) and its still picture for a reader without
 // WebGL (the image line that follows the marker in the prose; GitHub shows only that).
 std::string Book::motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion) {
-    const std::string number = page.chapter ? std::to_string(page.chapter) + "." + std::to_string(motion)
-                                            : std::to_string(motion);
+    const std::string number =
+        page.chapter ? std::to_string(page.chapter) + "." + std::to_string(motion) : std::to_string(motion);
     const std::string key = rel((page.source.parent_path() / path).lexically_normal(), root_);
     if (key.rfind("figures/", 0) != 0 || fs::path(key).extension() != ".json")
         throw std::runtime_error("a motion is a scene's JSON under figures/, not " + key);
@@ -663,12 +682,13 @@ std::string Book::motion_html(const Page& page, const std::string& path, const s
     for (std::size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
     ++page_motions_, ++motions_;
     std::string html = "<figure class=\"motion\" id=\"motion-" + number + "\">\n";
-    if (!fallback.empty()) html += "<img class=\"motion-fallback\" src=\"" + html_escape(fallback) + "\" alt=\"" +
-                                   html_escape(data["title"].get<std::string>()) + "\">\n";
+    if (!fallback.empty())
+        html += "<img class=\"motion-fallback\" src=\"" + html_escape(fallback) + "\" alt=\"" +
+                html_escape(data["title"].get<std::string>()) + "\">\n";
     html += "<script type=\"application/json\" class=\"motion-data\">" + json + "</script>\n";
     html += "<figcaption><strong>Motion " + number + ".</strong> " + html_escape(data["title"].get<std::string>()) +
-            ". Scene <code>" + html_escape(data["scene"].get<std::string>()) + "</code>: " +
-            html_escape(data["parameters"].get<std::string>()) + "; error " +
+            ". Scene <code>" + html_escape(data["scene"].get<std::string>()) +
+            "</code>: " + html_escape(data["parameters"].get<std::string>()) + "; error " +
             html_escape(prose::sci(data["error"].get<double>(), 2)) + " (" +
             html_escape(data["error_measure"].get<std::string>()) + ").";
     if (from != built) html += " <em>(The committed motion: this build has not written it.)</em>";
@@ -698,8 +718,8 @@ std::string Book::value_html(const prose::ValueMarker& v) {
     std::string shown;
     const prose::RunDecl* d = runs_.find(scene, v.run);
     if (!d)
-        throw std::runtime_error("the scene " + scene + " has no run '" + v.run + "' (declared: " +
-                                 runs_.names(scene) + ")");
+        throw std::runtime_error("the scene " + scene + " has no run '" + v.run + "' (declared: " + runs_.names(scene) +
+                                 ")");
     // This build's own report of the run; a report made with other options is never read.
     const prose::Json* report = nullptr;
     if (own_run()) {
@@ -720,8 +740,8 @@ std::string Book::value_html(const prose::ValueMarker& v) {
             ++values_committed_, ++page_committed_;
             ++committed_by_scene_[run_key];
             shown = "<span class=\"value committed\" title=\"" + html_escape(v.path) + ", run " + v.run +
-                    ": not run by this build; from the committed report of the same run\">" +
-                    html_escape(text) + "</span>";
+                    ": not run by this build; from the committed report of the same run\">" + html_escape(text) +
+                    "</span>";
         } else {
             ++values_shown_;
             shown = "<span class=\"value\" title=\"" + html_escape(v.path) + ", run " + v.run +
@@ -810,8 +830,9 @@ std::vector<std::string> Book::index_lines(const std::vector<std::string>& conte
     for (; i < top.size() && !top[i].empty() && top[i].rfind("#", 0) != 0; ++i)
         lead += std::regex_replace(top[i], link, "$1") + "\n";
     if (!lead.empty()) out.push_back("<div class=\"lead\">\n\n" + lead + "\n</div>\n");
-    out.push_back("New here? [Using the workbook](../README.md) has the two commands that build, run and test it, "
-                  "and how students, self-learners and instructors work with it.");
+    out.push_back(
+        "New here? [Using the workbook](../README.md) has the two commands that build, run and test it, "
+        "and how students, self-learners and instructors work with it.");
     out.push_back("");
     bool title_done = false;
     for (const auto& l : contents) {
@@ -876,7 +897,8 @@ std::string Book::pandoc_command(const Page& page, const fs::path& in, const fs:
     std::string cmd = shell_quote(pandoc_) + " --from=" + from + " --to=html5 --mathml --standalone" +
                       " --template=" + shell_quote((root_ / "cmake" / "book" / "page.html").string()) +
                       " --metadata=pagetitle:" + shell_quote(page.title + " | " + book_title_) +
-                      " --variable=root:" + shell_quote(up) + " --variable=book-title:" + shell_quote(html_escape(book_title_)) +
+                      " --variable=root:" + shell_quote(up) +
+                      " --variable=book-title:" + shell_quote(html_escape(book_title_)) +
                       " --variable=page-kind:" + page.kind +
                       " --variable=page-id:" + shell_quote(fs::path(page.file).stem().string()) +
                       " --variable=source:" + shell_quote(html_escape(rel(page.source, root_))) +
@@ -894,8 +916,8 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
     std::string cmd = pandoc_command(page, tmp, out_ / ".work" / page.file, "gfm+tex_math_dollars+smart");
     auto nav = [&](const std::string& name, const Page* p) {
         if (p)
-            cmd += " --variable=" + name + "-url:" + shell_quote(up_to_root(page.file) + p->file) + " --variable=" +
-                   name + "-title:" + shell_quote(html_escape(p->title));
+            cmd += " --variable=" + name + "-url:" + shell_quote(up_to_root(page.file) + p->file) +
+                   " --variable=" + name + "-title:" + shell_quote(html_escape(p->title));
     };
     nav("prev", prev);
     nav("next", next);
@@ -908,7 +930,8 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
     std::istringstream warnings(o.text);
     for (std::string w; std::getline(warnings, w);)
         if (!w.empty()) problems_.push_back(rel(page.source, root_) + ": pandoc: " + w);
-    prose::write_text(out_ / page.file, better_accents(rewrite_links(page, prose::read_text(out_ / ".work" / page.file))));
+    prose::write_text(out_ / page.file,
+                      better_accents(rewrite_links(page, prose::read_text(out_ / ".work" / page.file))));
 }
 
 void Book::render_code(const Page& page) {
@@ -922,9 +945,12 @@ void Book::render_code(const Page& page) {
     const std::string fence(longest + 1, '`');
     const std::string name = page.source.filename().string(), ext = page.source.extension().string();
     std::string lang = "default";
-    if (ext == ".cpp" || ext == ".hpp" || ext == ".h") lang = "cpp";
-    else if (ext == ".cmake" || name == "CMakeLists.txt") lang = "cmake";
-    else if (ext == ".sh" || name == "workbook" || name == "run") lang = "bash";
+    if (ext == ".cpp" || ext == ".hpp" || ext == ".h")
+        lang = "cpp";
+    else if (ext == ".cmake" || name == "CMakeLists.txt")
+        lang = "cmake";
+    else if (ext == ".sh" || name == "workbook" || name == "run")
+        lang = "bash";
     std::string md = "# " + page.title + "\n\nThe file `" + page.title +
                      "` as it is in the workbook's repository.\n\n" + fence + " {#src ." + lang + " .numberLines}\n" +
                      text + (text.empty() || text.back() == '\n' ? "" : "\n") + fence + "\n";
@@ -969,7 +995,8 @@ void Book::prepare_out() {
     }
     fs::create_directories(out_);
     if (const Output v = run(shell_quote(pandoc_) + " --version"); v.status != 0)
-        throw std::runtime_error("cannot run pandoc ('" + pandoc_ + "'): install it with sudo apt-get install pandoc, "
+        throw std::runtime_error("cannot run pandoc ('" + pandoc_ +
+                                 "'): install it with sudo apt-get install pandoc, "
                                  "or run cmake/workbook, which does");
     fs::copy_file(root_ / "cmake" / "book" / "book.css", out_ / "book.css", fs::copy_options::overwrite_existing);
 }
@@ -1017,7 +1044,8 @@ void Book::check_fragments() {
             for (auto it = std::sregex_iterator(html.begin(), html.end(), id_attr); it != std::sregex_iterator(); ++it)
                 s.insert((*it)[1]);
         }
-        if (!ids[file].count(id)) problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
+        if (!ids[file].count(id))
+            problems_.push_back(from + ": the link " + url + " names #" + id + ", which " + file + " does not have");
     }
 }
 
@@ -1025,8 +1053,9 @@ void Book::check_fragments() {
 int Book::summary(int chapters) {
     for (const auto& [what, count] : unmeasured_by_scene_)
         (strict_ ? problems_ : notes_)
-            .push_back("no report of " + what + " in " + figures_.string() + " or the committed figures: " +
-                       std::to_string(count) + " value(s) show the text committed with the prose, marked as not measured");
+            .push_back("no report of " + what + " in " + figures_.string() +
+                       " or the committed figures: " + std::to_string(count) +
+                       " value(s) show the text committed with the prose, marked as not measured");
     for (const auto& [what, count] : committed_by_scene_)
         notes_.push_back("this build did not run " + what + ": " + std::to_string(count) +
                          " value(s) from its committed report (same options), marked so");
@@ -1034,8 +1063,9 @@ int Book::summary(int chapters) {
     for (const auto& p : pages_) list += p.file + "\t" + p.kind + "\t" + p.title + "\n";
     prose::write_text(out_ / "pages.txt", list);
     fs::remove_all(out_ / ".work");
-    std::cout << "book: " << pages_.size() << " pages (" << chapters << " chapters), " << figures_copied_ << " figures, "
-              << motions_ << " motions, " << values_shown_ << " values from " << (own_run() ? figures_.string() : "the committed reports");
+    std::cout << "book: " << pages_.size() << " pages (" << chapters << " chapters), " << figures_copied_
+              << " figures, " << motions_ << " motions, " << values_shown_ << " values from "
+              << (own_run() ? figures_.string() : "the committed reports");
     if (values_committed_) std::cout << ", " << values_committed_ << " from the committed reports";
     if (values_unmeasured_) std::cout << ", " << values_unmeasured_ << " not measured";
     std::cout << "\n      " << (out_ / "index.html").string() << "\n";
@@ -1065,7 +1095,8 @@ int Book::render() {
 }
 
 int usage() {
-    std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] [--label <text>]\n"
+    std::cerr << "usage: book --render <root> --runs <runs.txt> [--figures <dir>] --out <dir> [--pandoc <exe>] "
+                 "[--label <text>]\n"
                  "            [--strict] --contents <contents.json>\n"
                  "       book --check-structure <root> --contents <contents.json>\n"
                  "       book --check-figures <root> <folder of SVG figures>...\n";
@@ -1080,12 +1111,12 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i + 1 < args.size(); ++i)
         if (args[i] == "--contents") {
             contents_file = fs::absolute(args[i + 1]);
-            args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+            args.erase(args.begin() + static_cast<std::ptrdiff_t>(i),
+                       args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
             break;
         }
     try {
-        if (args.size() == 2 && args[0] == "--check-structure")
-            return check_structure(fs::absolute(args[1]));
+        if (args.size() == 2 && args[0] == "--check-structure") return check_structure(fs::absolute(args[1]));
         if (args.size() >= 2 && args[0] == "--check-figures") {
             std::vector<fs::path> trees;
             for (std::size_t i = 2; i < args.size(); ++i) trees.push_back(fs::absolute(args[i]));
@@ -1112,7 +1143,8 @@ int main(int argc, char** argv) {
                 return usage();
             }
         const fs::path root = fs::absolute(args[1]);
-        Book book(root, fs::absolute(opt["--runs"]), opt.count("--figures") ? fs::absolute(opt["--figures"]) : root / "figures",
+        Book book(root, fs::absolute(opt["--runs"]),
+                  opt.count("--figures") ? fs::absolute(opt["--figures"]) : root / "figures",
                   fs::absolute(opt["--out"]), opt["--pandoc"], opt["--label"], strict);
         return book.render();
     } catch (const std::exception& e) {

@@ -41,6 +41,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -48,8 +49,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace prose {
 
@@ -124,7 +123,7 @@ inline std::vector<bool> code_span_mask(const std::string& line) {
 
 struct Snippet {
     std::string name, file, text;  // file relative to the root; text dedented
-    int line = 0;                   // of the `// snippet:` line
+    int line = 0;                  // of the `// snippet:` line
     bool used = false;
 };
 
@@ -178,7 +177,8 @@ inline std::map<std::string, Snippet> collect_snippets(const fs::path& root, con
             std::smatch m;
             const std::string where = rel(p, root) + ":" + std::to_string(i + 1);
             if (std::regex_match(lines[i], m, begin_marker)) {
-                if (!open.empty()) problems.push_back(where + ": snippet '" + m[1].str() + "' opens inside '" + open + "'");
+                if (!open.empty())
+                    problems.push_back(where + ": snippet '" + m[1].str() + "' opens inside '" + open + "'");
                 open = m[1];
                 open_line = static_cast<int>(i + 1);
                 body.clear();
@@ -197,7 +197,8 @@ inline std::map<std::string, Snippet> collect_snippets(const fs::path& root, con
             }
         }
         if (!open.empty())
-            problems.push_back(rel(p, root) + ":" + std::to_string(open_line) + ": snippet '" + open + "' is never closed");
+            problems.push_back(rel(p, root) + ":" + std::to_string(open_line) + ": snippet '" + open +
+                               "' is never closed");
     }
     return snippets;
 }
@@ -261,7 +262,8 @@ inline std::vector<ValueMarker> find_value_markers(const std::string& line) {
             if (key == "fmt") {
                 static const std::regex ok(R"(%[-+ 0#]*[0-9]*(\.[0-9]+)?[eEfFgGd]|sci[1-9])");
                 if (!std::regex_match(val, ok))
-                    v.error = "fmt=" + val + ": use a printf format for one number (%.2g, %.3e, %.0f, %d) or sci1..sci9";
+                    v.error =
+                        "fmt=" + val + ": use a printf format for one number (%.2g, %.3e, %.0f, %d) or sci1..sci9";
                 v.fmt = val;
             } else if (key == "scale") {
                 char* end = nullptr;
@@ -277,8 +279,9 @@ inline std::vector<ValueMarker> find_value_markers(const std::string& line) {
             }
         }
         if (v.error.empty() && v.run.empty())
-            v.error = "states no run: add run=default (the scene as cmake/workbook run runs it) or the name of a run "
-                      "declared with workbook_scene_run()";
+            v.error =
+                "states no run: add run=default (the scene as cmake/workbook run runs it) or the name of a run "
+                "declared with workbook_scene_run()";
         out.push_back(v);
     }
     return out;
@@ -305,7 +308,8 @@ inline std::string format_number(double x, const std::string& fmt) {
     if (fmt.rfind("sci", 0) == 0) return sci(x, fmt[3] - '0');
     char buf[128];
     if (fmt.back() == 'd')
-        std::snprintf(buf, sizeof buf, (fmt.substr(0, fmt.size() - 1) + "lld").c_str(), static_cast<long long>(std::llround(x)));
+        std::snprintf(buf, sizeof buf, (fmt.substr(0, fmt.size() - 1) + "lld").c_str(),
+                      static_cast<long long>(std::llround(x)));
     else
         std::snprintf(buf, sizeof buf, fmt.c_str(), x);
     return buf;
@@ -324,7 +328,8 @@ class Runs {
 public:
     Runs() = default;
     explicit Runs(const fs::path& file) {
-        if (!fs::exists(file)) throw std::runtime_error(file.string() + ": no list of runs (configure the build first)");
+        if (!fs::exists(file))
+            throw std::runtime_error(file.string() + ": no list of runs (configure the build first)");
         for (const auto& line : read_lines(file)) {
             if (line.empty()) continue;
             std::vector<std::string> parts;
@@ -360,7 +365,9 @@ private:
 inline fs::path run_folder(const fs::path& tree, const RunDecl& d) {
     return d.run == "default" ? tree / d.chapter : tree / d.chapter / d.run;
 }
-inline fs::path report_path(const fs::path& tree, const RunDecl& d) { return run_folder(tree, d) / (d.scene + ".json"); }
+inline fs::path report_path(const fs::path& tree, const RunDecl& d) {
+    return run_folder(tree, d) / (d.scene + ".json");
+}
 
 inline std::string join_args(const std::vector<std::string>& args) {
     std::string out;
@@ -389,7 +396,8 @@ public:
             const bool ok = run && run->is_object() && run->contains("name") && (*run)["name"].is_string() &&
                             run->contains("args") && (*run)["args"].is_array();
             if (!ok)
-                throw std::runtime_error(p.string() + ": no \"run\" record (name, args): not written by cmake/run_scenes.cmake");
+                throw std::runtime_error(p.string() +
+                                         ": no \"run\" record (name, args): not written by cmake/run_scenes.cmake");
             const auto name = (*run)["name"].get<std::string>();
             std::vector<std::string> a;
             for (const auto& x : (*run)["args"]) a.push_back(x.is_string() ? x.get<std::string>() : x.dump());
@@ -449,7 +457,8 @@ struct ReportWalk {
         const std::size_t i = std::stoul(index);
         const Json* cols = is_table(node) ? field(node, "columns") : nullptr;
         const Json* list = cols ? field(node, "rows") : node;
-        if (row_columns || !list->is_array() || i >= list->size()) throw std::runtime_error(at + " has no item [" + index + "]");
+        if (row_columns || !list->is_array() || i >= list->size())
+            throw std::runtime_error(at + " has no item [" + index + "]");
         node = &(*list)[i];
         row_columns = cols;
     }
@@ -457,7 +466,8 @@ struct ReportWalk {
     // [column=x]: the row of a table whose column equals x.
     void row(const std::string& name, const std::string& wanted) {
         if (row_columns || !is_table(node))
-            throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + name + "=" + wanted + "]");
+            throw std::runtime_error(at + " is not a table (columns and rows), so it has no row [" + name + "=" +
+                                     wanted + "]");
         const Json* cols = field(node, "columns");
         const std::size_t c = column(cols, name);
         if (c == cols->size()) throw std::runtime_error(at + " has no column '" + name + "'");
@@ -474,17 +484,19 @@ struct ReportWalk {
 
 // Follows `path` (the part after the scene name) into a report. Throws saying what is missing.
 inline const Json& lookup(const Json& report, const std::string& path) {
-    static const std::regex step(
-        R"(^\.([A-Za-z_][A-Za-z0-9_]*)|^\[([0-9]+)\]|^\[([A-Za-z_][A-Za-z0-9_]*)=([^\]]+)\])");
+    static const std::regex step(R"(^\.([A-Za-z_][A-Za-z0-9_]*)|^\[([0-9]+)\]|^\[([A-Za-z_][A-Za-z0-9_]*)=([^\]]+)\])");
     ReportWalk walk{&report, nullptr, "the report"};
     std::string rest = path, done;
     while (!rest.empty()) {
         std::smatch m;
         if (!std::regex_search(rest, m, step)) throw std::runtime_error("cannot read the key path at '" + rest + "'");
         walk.at = done.empty() ? "the report" : "'" + done + "'";
-        if (m[1].matched) walk.key(m[1]);
-        else if (m[2].matched) walk.item(m[2]);
-        else walk.row(m[3], m[4]);
+        if (m[1].matched)
+            walk.key(m[1]);
+        else if (m[2].matched)
+            walk.item(m[2]);
+        else
+            walk.row(m[3], m[4]);
         done += m[0].str();
         rest = m.suffix();
     }
@@ -505,7 +517,8 @@ inline std::string resolve(const ValueMarker& v, const Json& report) {
     if (x.is_number()) {
         const double number = x.get<double>();
         if (number == -1)
-            throw std::runtime_error("'" + v.path + "' is -1 in " + run + ", the scenes' mark for a value not measured");
+            throw std::runtime_error("'" + v.path + "' is -1 in " + run +
+                                     ", the scenes' mark for a value not measured");
         return format_number(v.scale * number, v.fmt);
     }
     if (x.is_string() && v.scale == 1) {

@@ -50,8 +50,13 @@ enum class Mode { check, check_values, update, diff };
 class ProseChecker {
 public:
     ProseChecker(const fs::path& root, Mode mode, const prose::Runs* runs, const fs::path* smoke, const fs::path* tree)
-        : root_(root), mode_(mode), runs_(runs), smoke_(smoke), tree_files_(prose::scan_tree(root)),
-          snippets_(prose::collect_snippets(root, tree_files_.sources, problems_)), committed_(root / "figures") {
+        : root_(root),
+          mode_(mode),
+          runs_(runs),
+          smoke_(smoke),
+          tree_files_(prose::scan_tree(root)),
+          snippets_(prose::collect_snippets(root, tree_files_.sources, problems_)),
+          committed_(root / "figures") {
         if (tree) other_.emplace(*tree);
         for (const auto& p : tree_files_.sources)  // a scene is chapters/*/<scene>.cpp
             if (rel(p, root).rfind("chapters/", 0) == 0 && p.extension() == ".cpp") scenes_.insert(p.stem().string());
@@ -65,8 +70,10 @@ public:
                 if (!s.used)
                     problems_.push_back(s.file + ":" + std::to_string(s.line) + ": snippet '" + name +
                                         "' is not quoted anywhere in the prose");
-        if (mode_ == Mode::diff) print_diff();
-        else print_summary();
+        if (mode_ == Mode::diff)
+            print_diff();
+        else
+            print_summary();
         for (const auto& p : problems_) std::cout << "  " << p << "\n";
         return problems_.empty() ? 0 : 1;
     }
@@ -93,7 +100,8 @@ private:
             for (auto v = markers.rbegin(); v != markers.rend(); ++v) changed |= value(*v, rel(p, root_), where, line);
             out.push_back(line);
             std::smatch m;
-            if (std::regex_match(lines[i], m, prose::snippet_use_marker())) i = quote(m[1], lines, i, where, out, changed);
+            if (std::regex_match(lines[i], m, prose::snippet_use_marker()))
+                i = quote(m[1], lines, i, where, out, changed);
         }
         if (mode_ == Mode::update && changed) {
             std::string text;
@@ -110,22 +118,26 @@ private:
         const std::string at = where + ": value '" + v.path + "'";
         if (!v.error.empty()) return problem(at + ": " + v.error);
         const std::string scene = v.scene();
-        if (!scenes_.count(scene)) return problem(at + ": there is no scene '" + scene + "' (chapters/*/" + scene + ".cpp)");
+        if (!scenes_.count(scene))
+            return problem(at + ": there is no scene '" + scene + "' (chapters/*/" + scene + ".cpp)");
         if (!runs_) return false;
         const prose::RunDecl* d = runs_->find(scene, v.run);
         if (!d)
-            return problem(at + ": the scene " + scene + " has no run '" + v.run + "' (declared: " + runs_->names(scene) + ")");
+            return problem(at + ": the scene " + scene + " has no run '" + v.run +
+                           "' (declared: " + runs_->names(scene) + ")");
         try {
             if (mode_ == Mode::diff) return diff(v, *d, file, at);
             if (mode_ == Mode::check_values) still_reported(v, scene, at);
             const prose::Json* r = committed_.report(*d);
             const std::string report = rel(prose::report_path(root_ / "figures", *d), root_);
-            if (!r) return problem(at + ": no committed report " + report + " (run cmake/workbook run, then the target update-figures)");
+            if (!r)
+                return problem(at + ": no committed report " + report +
+                               " (run cmake/workbook run, then the target update-figures)");
             const std::string text = prose::resolve(v, *r);
             if (text == v.text) return false;
             if (mode_ != Mode::update)
-                return problem(at + ": the text says '" + v.text + "', its committed report " + report + " says '" + text +
-                               "' (run the target update-snippets)");
+                return problem(at + ": the text says '" + v.text + "', its committed report " + report + " says '" +
+                               text + "' (run the target update-snippets)");
             line.replace(v.text_begin, v.text_end - v.text_begin, text);
             ++refreshed_;
             return true;
@@ -200,7 +212,8 @@ private:
         const bool update = mode_ == Mode::update;
         if (current != wanted) {
             ++stale_;
-            if (update) changed = true;
+            if (update)
+                changed = true;
             else if (mode_ == Mode::check)
                 problem(where + ": snippet '" + name + "' differs from " + s->second.file + ":" +
                         std::to_string(s->second.line) + " (run: cmake --build <build> --target update-snippets)");
@@ -267,9 +280,9 @@ int snippets_and_values(const fs::path& root, Mode mode, const prose::Runs* runs
 // ------------------------------------------------------------------ names of code in the prose
 
 struct Corpus {
-    std::set<std::string> words;                     // every identifier in the code
-    std::set<std::string> test_prefixes;             // "hat" of TEST_CASE("hat: ...")
-    std::map<std::string, fs::path> scene_sources;   // scene name -> its .cpp
+    std::set<std::string> words;                    // every identifier in the code
+    std::set<std::string> test_prefixes;            // "hat" of TEST_CASE("hat: ...")
+    std::map<std::string, fs::path> scene_sources;  // scene name -> its .cpp
 };
 
 Corpus read_corpus(const fs::path& root) {
@@ -280,7 +293,8 @@ Corpus read_corpus(const fs::path& root) {
         for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
             if (!e.is_regular_file()) continue;
             const auto ext = e.path().extension().string();
-            if (ext == ".md" || ext == ".svg" || ext == ".png" || ext == ".json" || ext == ".csv") continue;  // outputs, not code
+            if (ext == ".md" || ext == ".svg" || ext == ".png" || ext == ".json" || ext == ".csv")
+                continue;                                                     // outputs, not code
             if (rel(e.path(), root).rfind("cmake/tools/", 0) == 0) continue;  // the tools talk about markers
             files.push_back(e.path());
         }
@@ -293,7 +307,8 @@ Corpus read_corpus(const fs::path& root) {
         for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it)
             c.words.insert(it->str());
         if (rel(f, root).rfind("tests/", 0) == 0)
-            for (auto it = std::sregex_iterator(text.begin(), text.end(), test_case); it != std::sregex_iterator(); ++it)
+            for (auto it = std::sregex_iterator(text.begin(), text.end(), test_case); it != std::sregex_iterator();
+                 ++it)
                 c.test_prefixes.insert((*it)[1]);
         if (rel(f, root).rfind("chapters/", 0) == 0 && f.extension() == ".cpp") c.scene_sources[f.stem().string()] = f;
     }
@@ -315,7 +330,8 @@ public:
     int run() {
         for (const auto& p : prose::scan_tree(root_).prose)
             if (fs::exists(p)) file(p);
-        std::cout << names_ << " names of code and " << commands_ << " commands in the prose checked against the sources\n";
+        std::cout << names_ << " names of code and " << commands_
+                  << " commands in the prose checked against the sources\n";
         for (const auto& p : problems_) std::cout << "  " << p << "\n";
         return problems_.empty() ? 0 : 1;
     }
@@ -394,7 +410,8 @@ private:
         if (!std::regex_match(t, identifier)) return path(t, where, dir);
         if (prefix) {
             ++names_;
-            if (!corpus_.test_prefixes.count(t)) problems_.push_back(where + ": no grader's test name starts with '" + t + ":'");
+            if (!corpus_.test_prefixes.count(t))
+                problems_.push_back(where + ": no grader's test name starts with '" + t + ":'");
         } else if (!is_library_name(t) && (t.find('_') != std::string::npos || t.find("::") != std::string::npos)) {
             ++names_;  // std::, Eigen::, GSL's gsl_... are not this workbook's code
             const std::string last = t.substr(t.rfind(':') == std::string::npos ? 0 : t.rfind(':') + 1);

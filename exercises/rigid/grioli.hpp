@@ -146,8 +146,8 @@ struct PrecessionCheck {
 };
 
 // periods > 0, samples_per_period >= 1. Implicit methods get euler_poisson_jacobian of grioli_top.
-PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, double periods,
-                                 int samples_per_period, const OdeSettings& settings);
+PrecessionCheck integrate_grioli(const Moments& m, const GrioliPrecession& g, double periods, int samples_per_period,
+                                 const OdeSettings& settings);
 // end snippet
 
 // A derivation exercise (Chapter 5, "Exercises"): the total energy of the Theorem 1 precession,

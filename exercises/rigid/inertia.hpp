@@ -49,8 +49,8 @@ inline void require_body(const BodyAtG& b) {
     auto fail = [&b](const std::string& rule) {
         std::ostringstream s;
         s.precision(17);
-        s << "the moments at G must " << rule << " (got A_g = " << b.A_g << ", B_g = " << b.B_g
-          << ", C_g = " << b.C_g << ")";
+        s << "the moments at G must " << rule << " (got A_g = " << b.A_g << ", B_g = " << b.B_g << ", C_g = " << b.C_g
+          << ")";
         throw std::invalid_argument(s.str());
     };
     if (!(b.A_g < b.B_g && b.B_g < b.C_g)) fail("be strictly ordered, A_g < B_g < C_g");

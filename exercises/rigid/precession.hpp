@@ -72,8 +72,8 @@ Circle precession_omega_circle(const RegularPrecession& p);
 //           points: minimises sum (|q - c|^2 - r^2)^2 over the centre c and radius r.
 //   plane_residual  = max over the points of their distance from the plane;
 //   circle_residual = max over the points of | distance of the projected point from c - r |.
-// The fitted normal has either sign. Points on one circle give both residuals ~ 0 (round-off). Throws std::invalid_argument for
-// fewer than 3 points, a non-finite point, or points that do not span a plane (all equal, or
+// The fitted normal has either sign. Points on one circle give both residuals ~ 0 (round-off). Throws
+// std::invalid_argument for fewer than 3 points, a non-finite point, or points that do not span a plane (all equal, or
 // on one line: the second singular value at most 1e-12 times the largest).
 struct CircleFit {
     Circle circle;

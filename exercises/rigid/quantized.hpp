@@ -39,9 +39,9 @@ struct Oscillator {
 
 // The energy-dependent friction coefficient k(E) = kappa |sin(pi E / E0)|^power.
 struct LevelFriction {
-    double kappa = 1;   // its largest value, reached half-way between two levels
-    double E0 = 1;      // the spacing of the levels E_n = n E0
-    double power = 2;   // the order of its zero at each level: 2 smooth, 1 a kink
+    double kappa = 1;  // its largest value, reached half-way between two levels
+    double E0 = 1;     // the spacing of the levels E_n = n E0
+    double power = 2;  // the order of its zero at each level: 2 smooth, 1 a kink
 };
 // end snippet
 
@@ -92,7 +92,7 @@ double energy_rate(const Oscillator& osc, const LevelFriction& k, double q, doub
 struct SpinField {
     Vec3 B = Vec3::UnitZ();
     double e_over_mc = 1;
-    double beta = 0;   // 0: the plain precession dS/dt = -(e/mc) [B, S]
+    double beta = 0;  // 0: the plain precession dS/dt = -(e/mc) [B, S]
 };
 // end snippet
 

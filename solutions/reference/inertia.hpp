@@ -39,7 +39,7 @@ inline EigenMoments eigen_moments(const Mat3& I) {
     for (int i = 0; i < 3; ++i)
         if (i != iB) others[n++] = i;
     const int iA = others[0], iC = others[1];  // eigenvalues come sorted
-    return {es.eigenvalues()(iA), es.eigenvalues()(iB), es.eigenvalues()(iC),
+    return {es.eigenvalues()(iA),      es.eigenvalues()(iB),      es.eigenvalues()(iC),
             es.eigenvectors().col(iA), es.eigenvectors().col(iB), es.eigenvectors().col(iC)};
 }
 

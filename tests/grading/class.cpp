@@ -19,9 +19,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <set>
-
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "grading.hpp"
 
@@ -35,7 +34,8 @@ bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c
 
 bool has_word(const std::string& text, const std::string& word) {
     for (std::size_t p = text.find(word); p != std::string::npos; p = text.find(word, p + 1))
-        if ((p == 0 || !word_char(text[p - 1])) && (p + word.size() >= text.size() || !word_char(text[p + word.size()])))
+        if ((p == 0 || !word_char(text[p - 1])) &&
+            (p + word.size() >= text.size() || !word_char(text[p + word.size()])))
             return true;
     return false;
 }
@@ -64,7 +64,8 @@ std::string strip_comments(const std::string& s) {
 
 // Names the file declares (parameters, variables), found by their types: what a copier renames.
 std::set<std::string> declared(const std::string& s, const std::set<std::string>& keep) {
-    static const std::vector<std::string> types = {"Mat3", "Vec3", "double", "bool", "int", "auto", "AxisAngle", "Index"};
+    static const std::vector<std::string> types = {"Mat3", "Vec3", "double",    "bool",
+                                                   "int",  "auto", "AxisAngle", "Index"};
     std::set<std::string> names;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (!word_char(s[i]) || (i > 0 && word_char(s[i - 1]))) continue;
@@ -103,7 +104,8 @@ std::string rename(const std::string& s, const std::map<std::string, std::string
         std::size_t e = i;
         while (e < s.size() && word_char(s[e])) ++e;
         const std::string word = s.substr(i, e - i);
-        const bool member = (i > 0 && s[i - 1] == '.') || (i > 1 && (s.compare(i - 2, 2, "::") == 0 || s.compare(i - 2, 2, "->") == 0));
+        const bool member =
+            (i > 0 && s[i - 1] == '.') || (i > 1 && (s.compare(i - 2, 2, "::") == 0 || s.compare(i - 2, 2, "->") == 0));
         const auto it = names.find(word);
         out += (it != names.end() && !member) ? it->second : word;
         i = e;
@@ -112,9 +114,9 @@ std::string rename(const std::string& s, const std::map<std::string, std::string
 }
 
 std::map<std::string, std::string> new_names(const std::string& s, const std::set<std::string>& keep, int seed) {
-    static const std::vector<std::string> pool = {"tmp", "val", "res", "out", "mat", "vec", "ang", "len", "idx", "cv", "sv",
-                                                  "m1", "m2", "p1", "p2", "x1", "x2", "y1", "y2", "k1", "k2", "t1",
-                                                  "t2", "g1", "h1", "e1", "e2", "u1", "w1", "z1", "z2", "q7", "r7", "s7"};
+    static const std::vector<std::string> pool = {
+        "tmp", "val", "res", "out", "mat", "vec", "ang", "len", "idx", "cv", "sv", "m1", "m2", "p1", "p2", "x1", "x2",
+        "y1",  "y2",  "k1",  "k2",  "t1",  "t2",  "g1",  "h1",  "e1",  "e2", "u1", "w1", "z1", "z2", "q7", "r7", "s7"};
     std::map<std::string, std::string> names;
     std::size_t k = static_cast<std::size_t>(seed) * 7;
     for (const auto& name : declared(s, keep)) {
@@ -138,8 +140,9 @@ std::string reformat(const std::string& s) {
         if (!line.empty() && line[0] == '}') --depth;
         out += std::string(static_cast<std::size_t>(std::max(depth, 0)), '\t') + line + "\n";
         if (opens) out += std::string(static_cast<std::size_t>(std::max(depth, 0)), '\t') + "{\n";
-        depth += static_cast<int>(std::count(line.begin(), line.end(), '{')) - static_cast<int>(std::count(line.begin(), line.end(), '}')) +
-                 (opens ? 1 : 0) + (!line.empty() && line[0] == '}' ? 1 : 0);
+        depth += static_cast<int>(std::count(line.begin(), line.end(), '{')) -
+                 static_cast<int>(std::count(line.begin(), line.end(), '}')) + (opens ? 1 : 0) +
+                 (!line.empty() && line[0] == '}' ? 1 : 0);
     }
     return out;
 }
@@ -149,19 +152,24 @@ std::string respell(const std::string& s) {
     std::string text = replace_all(s, "std::", "");
     const std::size_t last_include = text.rfind("#include");
     const std::size_t line_end = text.find('\n', last_include);
-    if (last_include != std::string::npos && line_end != std::string::npos) text.insert(line_end + 1, "using namespace std;\n");
+    if (last_include != std::string::npos && line_end != std::string::npos)
+        text.insert(line_end + 1, "using namespace std;\n");
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
-        if (!std::isdigit(static_cast<unsigned char>(text[i])) || (i > 0 && (word_char(text[i - 1]) || text[i - 1] == '.'))) {
+        if (!std::isdigit(static_cast<unsigned char>(text[i])) ||
+            (i > 0 && (word_char(text[i - 1]) || text[i - 1] == '.'))) {
             out += text[i++];
             continue;
         }
         std::size_t e = i;
-        while (e < text.size() && (word_char(text[e]) || text[e] == '.' || ((text[e] == '-' || text[e] == '+') && (text[e - 1] == 'e'))))
+        while (e < text.size() &&
+               (word_char(text[e]) || text[e] == '.' || ((text[e] == '-' || text[e] == '+') && (text[e - 1] == 'e'))))
             ++e;
         std::string number = text.substr(i, e - i);
-        if (number.find('.') != std::string::npos && number.find('e') == std::string::npos) number += "e0";
-        else if (number.find('e') != std::string::npos && number.find('.') == std::string::npos) number.insert(number.find('e'), ".0");
+        if (number.find('.') != std::string::npos && number.find('e') == std::string::npos)
+            number += "e0";
+        else if (number.find('e') != std::string::npos && number.find('.') == std::string::npos)
+            number.insert(number.find('e'), ".0");
         out += number;
         i = e;
     }
@@ -174,7 +182,7 @@ std::pair<std::size_t, std::size_t> definition(const std::string& s, const std::
         const std::size_t start = s.rfind('\n', p) + 1;
         if (!std::isalpha(static_cast<unsigned char>(s[start]))) continue;  // not at the start of a line
         const std::size_t open = s.find('{', p), semicolon = s.find(';', p);
-        if (open == std::string::npos || semicolon < open) continue;      // a declaration
+        if (open == std::string::npos || semicolon < open) continue;  // a declaration
         int depth = 0;
         for (std::size_t i = open; i < s.size(); ++i) {
             depth += s[i] == '{' ? 1 : s[i] == '}' ? -1 : 0;
@@ -192,7 +200,8 @@ std::string reorder(const std::string& s, const std::vector<std::string>& exerci
     std::sort(spans.begin(), spans.end());
     if (spans.empty()) return s;
     std::string out = s.substr(0, spans.front().first);
-    for (auto it = spans.rbegin(); it != spans.rend(); ++it) out += s.substr(it->first, it->second - it->first) + "\n\n";
+    for (auto it = spans.rbegin(); it != spans.rend(); ++it)
+        out += s.substr(it->first, it->second - it->first) + "\n\n";
     return out + s.substr(spans.back().second);
 }
 
@@ -221,8 +230,8 @@ struct Member {
     std::string extra;         // another file it holds: "name:content"
 };
 
-std::vector<Member> planted(const std::string& reference, const std::string& stub, const std::vector<std::string>& exercises,
-                            double full) {
+std::vector<Member> planted(const std::string& reference, const std::string& stub,
+                            const std::vector<std::string>& exercises, double full) {
     const std::set<std::string> keep(exercises.begin(), exercises.end());
     const std::string renamed = rename(reference, new_names(reference, keep, 1));
     const std::string disguised = respell(reformat(strip_comments(renamed)));
@@ -235,11 +244,13 @@ std::vector<Member> planted(const std::string& reference, const std::string& stu
         {"planted_disguised", "reference", disguised, false, full, ""},
         {"planted_reordered", "reference", reorder(renamed, exercises), false, full, ""},
         {"planted_copy_of_copy", "reference", again, true, full, ""},
-        {"planted_half", "reference", half_copy(reference, stub, exercises, half), false, static_cast<double>(half), ""},
+        {"planted_half", "reference", half_copy(reference, stub, exercises, half), false, static_cast<double>(half),
+         ""},
     };
 }
 
-std::vector<Member> others(const Setup& setup, const std::string& stub, const std::vector<std::string>& exercises, double full) {
+std::vector<Member> others(const Setup& setup, const std::string& stub, const std::vector<std::string>& exercises,
+                           double full) {
     const std::string dir = setup.root + "/tests/grading/similarity/";
     const std::set<std::string> keep(exercises.begin(), exercises.end());
     const std::string classmate = read_file(dir + "classmate.cpp");
@@ -252,12 +263,14 @@ std::vector<Member> others(const Setup& setup, const std::string& stub, const st
         replace_all(stub, "{ todo(\"hat\"); }", "{ return hat(2 * w); }")};
     std::vector<Member> m = {
         {"pair_original", "pair_copy", classmate, false, -1, ""},
-        {"pair_copy", "pair_original", respell(reformat(strip_comments(rename(classmate, new_names(classmate, keep, 5))))), true, -1, ""},
+        {"pair_copy", "pair_original",
+         respell(reformat(strip_comments(rename(classmate, new_names(classmate, keep, 5))))), true, -1, ""},
         {"honest_levi_civita", "none", read_file(dir + "honest_levi_civita.cpp"), false, full, ""},
         {"honest_eigen_geometry", "none", read_file(dir + "honest_eigen_geometry.cpp"), true, full, ""},
         {"honest_rodrigues", "none", read_file(dir + "honest_rodrigues.cpp"), false, full, ""},
     };
-    for (int k = 1; k <= 6; ++k) m.push_back({"stubs_" + std::to_string(k), "none", stub, k % 2 == 0, 0, k == 3 ? "README.md:my notes\n" : ""});
+    for (int k = 1; k <= 6; ++k)
+        m.push_back({"stubs_" + std::to_string(k), "none", stub, k % 2 == 0, 0, k == 3 ? "README.md:my notes\n" : ""});
     m.push_back({"missing_empty", "none", "", false, 0, ""});
     m.push_back({"missing_misnamed", "none", "", false, 0, "Rotation.cpp:" + stub});
     m.push_back({"missing_readme_only", "none", "", true, 0, "README.md:I could not finish.\n"});
@@ -280,16 +293,26 @@ Args parse(int argc, char** argv) {
     for (int i = 2; i < argc; ++i) {
         const std::string o = argv[i];
         const std::string v = i + 1 < argc ? argv[i + 1] : "";
-        if (o == "--setup") a.setup = v, ++i;
-        else if (o == "--out") a.out = v, ++i;
-        else if (o == "--expect") a.expect = v, ++i;
-        else if (o == "--class") a.class_dir = v, ++i;
-        else if (o == "--grades") a.grades = v, ++i;
-        else if (o == "--score") a.score = std::stod(v), ++i;
-        else if (o == "--max-score") a.max_score = std::stod(v), ++i;
-        else if (o == "--size") a.size = std::stoi(v), ++i;
-        else if (!starts_with(o, "--")) a.file = o;
-        else std::fprintf(stderr, "grading_class: unknown option %s\n", o.c_str()), std::exit(2);
+        if (o == "--setup")
+            a.setup = v, ++i;
+        else if (o == "--out")
+            a.out = v, ++i;
+        else if (o == "--expect")
+            a.expect = v, ++i;
+        else if (o == "--class")
+            a.class_dir = v, ++i;
+        else if (o == "--grades")
+            a.grades = v, ++i;
+        else if (o == "--score")
+            a.score = std::stod(v), ++i;
+        else if (o == "--max-score")
+            a.max_score = std::stod(v), ++i;
+        else if (o == "--size")
+            a.size = std::stoi(v), ++i;
+        else if (!starts_with(o, "--"))
+            a.file = o;
+        else
+            std::fprintf(stderr, "grading_class: unknown option %s\n", o.c_str()), std::exit(2);
     }
     return a;
 }
@@ -302,9 +325,11 @@ const Topic* find_topic(const Setup& setup) {
 
 int make(const Args& a) {
     Setup setup;
-    if (const auto problem = load_setup(a.setup, setup); !problem.empty()) return std::fprintf(stderr, "grading_class: %s\n", problem.c_str()), 2;
+    if (const auto problem = load_setup(a.setup, setup); !problem.empty())
+        return std::fprintf(stderr, "grading_class: %s\n", problem.c_str()), 2;
     const Topic* topic = find_topic(setup);
-    if (!topic || a.out.empty() || a.expect.empty()) return std::fprintf(stderr, "grading_class make: needs --out, --expect and the rotation topic\n"), 2;
+    if (!topic || a.out.empty() || a.expect.empty())
+        return std::fprintf(stderr, "grading_class make: needs --out, --expect and the rotation topic\n"), 2;
     std::vector<std::string> exercises;
     double full = 0;
     for (const auto& e : topic->exercises) exercises.push_back(e.name), full += e.points;
@@ -313,11 +338,12 @@ int make(const Args& a) {
     std::vector<Member> members = planted(reference, stub, exercises, full);
     for (auto& m : others(setup, stub, exercises, full)) members.push_back(m);
     if (a.size == 10) {  // a smaller class, one of each kind that matters to the report
-        static const std::set<std::string> ten = {"planted_exact", "planted_disguised", "planted_half", "pair_original",
-                                                  "pair_copy", "honest_levi_civita", "honest_eigen_geometry",
-                                                  "honest_rodrigues", "stubs_2", "broken_build_1"};
-        members.erase(std::remove_if(members.begin(), members.end(), [](const Member& m) { return !ten.count(m.name); }),
-                      members.end());
+        static const std::set<std::string> ten = {
+            "planted_exact",      "planted_disguised",     "planted_half",     "pair_original", "pair_copy",
+            "honest_levi_civita", "honest_eigen_geometry", "honest_rodrigues", "stubs_2",       "broken_build_1"};
+        members.erase(
+            std::remove_if(members.begin(), members.end(), [](const Member& m) { return !ten.count(m.name); }),
+            members.end());
     } else if (a.size != 30) {
         return std::fprintf(stderr, "grading_class make: --size is 30 (the class) or 10 (a part of it)\n"), 2;
     }
@@ -327,7 +353,8 @@ int make(const Args& a) {
         const std::string folder = a.out + "/" + m.name + (m.flat ? "" : "/exercises");
         make_dirs(folder);
         if (!m.text.empty()) write_file(folder + "/" + kTopic + ".cpp", m.text);
-        if (!m.extra.empty()) write_file(folder + "/" + m.extra.substr(0, m.extra.find(':')), m.extra.substr(m.extra.find(':') + 1));
+        if (!m.extra.empty())
+            write_file(folder + "/" + m.extra.substr(0, m.extra.find(':')), m.extra.substr(m.extra.find(':') + 1));
         expected += m.name + "\t" + m.expect + "\t" + format_number(m.score) + "\n";
     }
     write_file(a.expect, expected);
@@ -343,14 +370,16 @@ bool one_of(const nlohmann::json& v, const std::set<std::string>& allowed) {
 
 // The problems of one test entry, in Gradescope's autograder format.
 void test_problems(const nlohmann::json& t, std::size_t k, std::vector<std::string>& problems, double& sum) {
-    static const std::set<std::string> keys = {"score", "max_score", "status", "name", "name_format", "number", "output",
-                                               "output_format", "tags", "visibility", "extra_data"};
+    static const std::set<std::string> keys = {"score",       "max_score",  "status",    "name",
+                                               "name_format", "number",     "output",    "output_format",
+                                               "tags",        "visibility", "extra_data"};
     static const std::set<std::string> visibility = {"hidden", "after_due_date", "after_published", "visible"};
     const std::string at = "tests[" + std::to_string(k) + "]";
     if (!t.is_object()) return problems.push_back(at + " is not an object");
     for (const auto& [key, value] : t.items())
         if (!keys.count(key)) problems.push_back(at + " has a key Gradescope does not know: " + key);
-    if (!t.contains("name") || !t["name"].is_string() || t["name"].get<std::string>().empty()) problems.push_back(at + ": no name");
+    if (!t.contains("name") || !t["name"].is_string() || t["name"].get<std::string>().empty())
+        problems.push_back(at + ": no name");
     if (!t.contains("output") || !t["output"].is_string()) problems.push_back(at + ": no output");
     if (!t.contains("visibility") || !one_of(t["visibility"], visibility)) problems.push_back(at + ": bad visibility");
     if (!t.contains("status") || !one_of(t["status"], {"passed", "failed"})) problems.push_back(at + ": bad status");
@@ -359,16 +388,17 @@ void test_problems(const nlohmann::json& t, std::size_t k, std::vector<std::stri
         return problems.push_back(at + ": score and max_score must be numbers");
     const double score = t["score"].get<double>(), max_score = t["max_score"].get<double>();
     const bool passed = t.value("status", "") == "passed";
-    if (!(max_score > 0) || !(score >= 0) || score > max_score) problems.push_back(at + ": score out of [0, max_score]");
+    if (!(max_score > 0) || !(score >= 0) || score > max_score)
+        problems.push_back(at + ": score out of [0, max_score]");
     if (passed != (score == max_score) || (!passed && score != 0))
         problems.push_back(at + ": status " + t.value("status", "") + " with score " + format_number(score));
     sum += score;
 }
 
 std::vector<std::string> schema_problems(const std::string& path, double want_score, double want_max) {
-    static const std::set<std::string> keys = {"score", "execution_time", "output", "output_format", "test_output_format",
-                                               "test_name_format", "visibility", "stdout_visibility", "extra_data", "tests",
-                                               "leaderboard"};
+    static const std::set<std::string> keys = {
+        "score",      "execution_time",    "output",     "output_format", "test_output_format", "test_name_format",
+        "visibility", "stdout_visibility", "extra_data", "tests",         "leaderboard"};
     static const std::set<std::string> visibility = {"hidden", "after_due_date", "after_published", "visible"};
     bool ok = false;
     const nlohmann::json j = nlohmann::json::parse(read_file(path, &ok), nullptr, false);
@@ -388,17 +418,22 @@ std::vector<std::string> schema_problems(const std::string& path, double want_sc
         max_sum += j["tests"][k].value("max_score", 0.0);
     }
     const double score = j.value("score", -1.0);
-    if (std::abs(sum - score) > 1e-9) problems.push_back("the tests' scores add up to " + format_number(sum) + ", not to the score " + format_number(score));
-    if (want_score >= 0 && std::abs(score - want_score) > 1e-9) problems.push_back("score " + format_number(score) + ", expected " + format_number(want_score));
-    if (want_max >= 0 && std::abs(max_sum - want_max) > 1e-9) problems.push_back("max_score adds up to " + format_number(max_sum) + ", expected " + format_number(want_max));
+    if (std::abs(sum - score) > 1e-9)
+        problems.push_back("the tests' scores add up to " + format_number(sum) + ", not to the score " +
+                           format_number(score));
+    if (want_score >= 0 && std::abs(score - want_score) > 1e-9)
+        problems.push_back("score " + format_number(score) + ", expected " + format_number(want_score));
+    if (want_max >= 0 && std::abs(max_sum - want_max) > 1e-9)
+        problems.push_back("max_score adds up to " + format_number(max_sum) + ", expected " + format_number(want_max));
     return problems;
 }
 
 int schema(const Args& a) {
     const auto problems = schema_problems(a.file, a.score, a.max_score);
     for (const auto& p : problems) std::printf("%s: %s\n", a.file.c_str(), p.c_str());
-    if (problems.empty()) std::printf("%s: a valid Gradescope results.json%s\n", a.file.c_str(),
-                                      a.score >= 0 ? (", score " + format_number(a.score)).c_str() : "");
+    if (problems.empty())
+        std::printf("%s: a valid Gradescope results.json%s\n", a.file.c_str(),
+                    a.score >= 0 ? (", score " + format_number(a.score)).c_str() : "");
     return problems.empty() ? 0 : 1;
 }
 
@@ -424,10 +459,14 @@ std::vector<std::string> csv_fields(const std::string& line) {
     bool quoted = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
-        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
-        else if (c == '"') quoted = !quoted;
-        else if (c == ',' && !quoted) fields.emplace_back();
-        else fields.back() += c;
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+            fields.back() += '"', ++i;
+        else if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            fields.emplace_back();
+        else
+            fields.back() += c;
     }
     return fields;
 }
@@ -450,7 +489,8 @@ Listing read_listing(const std::string& path, std::vector<std::string>& problems
         if (lines[k].empty()) continue;
         const auto f = csv_fields(lines[k]);
         if (f.size() != 12) {
-            problems.push_back(path + ":" + std::to_string(k + 1) + ": " + std::to_string(f.size()) + " fields, not 12");
+            problems.push_back(path + ":" + std::to_string(k + 1) + ": " + std::to_string(f.size()) +
+                               " fields, not 12");
             continue;
         }
         l.mentioned.insert(f[2]);
@@ -466,21 +506,25 @@ Listing read_listing(const std::string& path, std::vector<std::string>& problems
 
 void check_similarity(const std::vector<Expected>& members, const Listing& l, const std::vector<std::string>& exercises,
                       std::vector<std::string>& problems) {
-    const std::set<std::string> exact = l.reference.count("planted_exact") ? l.reference.at("planted_exact") : std::set<std::string>{};
-    const std::set<std::string> first_half(exercises.begin(), exercises.begin() + static_cast<long>(exercises.size() / 2));
+    const std::set<std::string> exact =
+        l.reference.count("planted_exact") ? l.reference.at("planted_exact") : std::set<std::string>{};
+    const std::set<std::string> first_half(exercises.begin(),
+                                           exercises.begin() + static_cast<long>(exercises.size() / 2));
     if (exact.empty()) problems.push_back("planted_exact, the reference itself, is listed on no exercise");
     for (const auto& m : members) {
         const auto it = l.reference.find(m.name);
         const std::set<std::string> listed = it == l.reference.end() ? std::set<std::string>{} : it->second;
         if (m.expect == "none" && l.mentioned.count(m.name)) problems.push_back(m.name + " is listed, and must not be");
-        if (m.expect != "reference" && !listed.empty()) problems.push_back(m.name + " is listed with the reference, and must not be");
+        if (m.expect != "reference" && !listed.empty())
+            problems.push_back(m.name + " is listed with the reference, and must not be");
         if (m.expect == "reference") {
             for (const auto& e : exact)
                 if ((m.score >= 0 && m.name != "planted_half") || first_half.count(e))
                     if (!listed.count(e)) problems.push_back(m.name + " is not listed with the reference on " + e);
             if (m.name == "planted_half")
                 for (const auto& e : listed)
-                    if (!first_half.count(e)) problems.push_back("planted_half is listed on " + e + ", which it did not copy");
+                    if (!first_half.count(e))
+                        problems.push_back("planted_half is listed on " + e + ", which it did not copy");
         } else if (m.expect != "none" && !l.pairs.count({std::min(m.name, m.expect), std::max(m.name, m.expect)})) {
             problems.push_back(m.name + " and " + m.expect + " are not listed together");
         }
@@ -488,8 +532,10 @@ void check_similarity(const std::vector<Expected>& members, const Listing& l, co
 }
 
 void check_lms(const std::vector<Expected>& members, const std::string& grades, std::vector<std::string>& problems) {
-    const auto canvas = split(read_file(grades + "/canvas.csv"), '\n'), moodle = split(read_file(grades + "/moodle.csv"), '\n');
-    if (canvas.size() != members.size() + 3 || canvas[0] != "Student,ID,SIS User ID,SIS Login ID,Section,Grioli workbook" ||
+    const auto canvas = split(read_file(grades + "/canvas.csv"), '\n'),
+               moodle = split(read_file(grades + "/moodle.csv"), '\n');
+    if (canvas.size() != members.size() + 3 ||
+        canvas[0] != "Student,ID,SIS User ID,SIS Login ID,Section,Grioli workbook" ||
         !starts_with(canvas[1], "Points Possible,,,,,"))
         problems.push_back("canvas.csv lacks Canvas's columns, its Points Possible row or a row per submission");
     if (moodle.size() != members.size() + 2 || moodle[0] != "Username,Grioli workbook")
@@ -513,7 +559,8 @@ void check_grades(const std::vector<Expected>& members, const std::string& grade
     const std::string csv = read_file(grades + "/class.csv");
     if (static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')) != members.size() + 1)
         problems.push_back("class.csv does not have one row per submission");
-    if (read_file(grades + "/similarity.md").find("# Similarity") == std::string::npos) problems.push_back("no similarity.md");
+    if (read_file(grades + "/similarity.md").find("# Similarity") == std::string::npos)
+        problems.push_back("no similarity.md");
     check_lms(members, grades, problems);
 }
 
@@ -523,8 +570,9 @@ void print_measure(const Setup& setup, const std::vector<Expected>& members, con
     Options options;
     for (const auto& m : members) files.push_back({m.name, collect_files(setup, options, class_dir + "/" + m.name)});
     const std::vector<SimilarityHit> all = find_similar(setup, files, true);
-    std::printf("\n| Submission | Expected | Listed with the reference | Highest exercise score against the reference (file) "
-                "| Listed with | Highest exercise score against another submission |\n|---|---|---:|---|---|---|\n");
+    std::printf(
+        "\n| Submission | Expected | Listed with the reference | Highest exercise score against the reference (file) "
+        "| Listed with | Highest exercise score against another submission |\n|---|---|---:|---|---|---|\n");
     for (const auto& m : members) {
         if (m.expect == "none" && !starts_with(m.name, "honest_")) continue;
         int listed_ref = 0;
@@ -542,29 +590,33 @@ void print_measure(const Setup& setup, const std::vector<Expected>& members, con
             }
         }
         std::string with;
-        for (const auto& [peer, n] : listed_with) with += (with.empty() ? "" : ", ") + peer + " (" + std::to_string(n) + ")";
+        for (const auto& [peer, n] : listed_with)
+            with += (with.empty() ? "" : ", ") + peer + " (" + std::to_string(n) + ")";
         auto describe = [&](const SimilarityHit* h) {
             if (!h) return std::string("none shared");
             const std::string peer = h->other.empty() ? "" : " with " + (h->student == m.name ? h->other : h->student);
             return format_number(h->score) + " on " + h->exercise + peer + " (" + format_number(h->file_score) + ")";
         };
-        std::printf("| %s | %s | %d | %s | %s | %s |\n", m.name.c_str(), m.expect.c_str(), listed_ref, describe(ref).c_str(),
-                    with.c_str(), describe(other).c_str());
+        std::printf("| %s | %s | %d | %s | %s | %s |\n", m.name.c_str(), m.expect.c_str(), listed_ref,
+                    describe(ref).c_str(), with.c_str(), describe(other).c_str());
     }
 }
 
 int check(const Args& a) {
     Setup setup;
-    if (const auto problem = load_setup(a.setup, setup); !problem.empty()) return std::fprintf(stderr, "grading_class: %s\n", problem.c_str()), 2;
+    if (const auto problem = load_setup(a.setup, setup); !problem.empty())
+        return std::fprintf(stderr, "grading_class: %s\n", problem.c_str()), 2;
     const Topic* topic = find_topic(setup);
     if (!topic || a.class_dir.empty() || a.expect.empty() || a.grades.empty())
-        return std::fprintf(stderr, "grading_class check: needs --class, --expect, --grades and the rotation topic\n"), 2;
+        return std::fprintf(stderr, "grading_class check: needs --class, --expect, --grades and the rotation topic\n"),
+               2;
     std::vector<std::string> exercises;
     for (const auto& e : topic->exercises) exercises.push_back(e.name);
     const std::vector<Expected> members = read_expected(a.expect);
     std::vector<std::string> problems;
     if (members.size() < static_cast<std::size_t>(a.size))
-        problems.push_back("the class has " + std::to_string(members.size()) + " submissions, fewer than " + std::to_string(a.size));
+        problems.push_back("the class has " + std::to_string(members.size()) + " submissions, fewer than " +
+                           std::to_string(a.size));
     const Listing listing = read_listing(a.grades + "/similarity.csv", problems);
     check_similarity(members, listing, exercises, problems);
     if (is_directory(a.grades + "/results")) check_grades(members, a.grades, problems);
@@ -574,8 +626,10 @@ int check(const Args& a) {
         for (const auto& p : problems) std::printf("  %s\n", p.c_str());
         return 1;
     }
-    std::printf("\ngrading_class check: %zu submissions; the copies are listed, the honest solutions are not%s\n", members.size(),
-                is_directory(a.grades + "/results") ? "; every result, class.csv, canvas.csv and moodle.csv as expected" : "");
+    std::printf(
+        "\ngrading_class check: %zu submissions; the copies are listed, the honest solutions are not%s\n",
+        members.size(),
+        is_directory(a.grades + "/results") ? "; every result, class.csv, canvas.csv and moodle.csv as expected" : "");
     return 0;
 }
 

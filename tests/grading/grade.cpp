@@ -10,9 +10,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "grading.hpp"
 
@@ -46,21 +45,22 @@ Said read_verdict(const Setup& setup, const std::string& lines, const std::strin
         } else if (!inside) {
             continue;
         } else if (event == "assert" && said.first_failure.empty()) {
-            std::string out = relative_to_root(setup, j.value("file", "")) + ":" + std::to_string(j.value("line", 0)) + ": " +
-                              j.value("type", "CHECK") + "( " + j.value("expression", "") + " ) failed\n";
+            std::string out = relative_to_root(setup, j.value("file", "")) + ":" + std::to_string(j.value("line", 0)) +
+                              ": " + j.value("type", "CHECK") + "( " + j.value("expression", "") + " ) failed\n";
             const std::string expanded = j.value("expanded", "");
             if (!expanded.empty() && expanded != j.value("expression", "")) out += "  with values: " + expanded + "\n";
             const std::string wanted = j.value("expected_exception", "");
             const std::string thrown = j.value("threw", "");
-            if (!wanted.empty()) out += "  expected it to throw " + wanted + (j.contains("threw") ? "" : ", and it did not") + "\n";
+            if (!wanted.empty())
+                out += "  expected it to throw " + wanted + (j.contains("threw") ? "" : ", and it did not") + "\n";
             if (!thrown.empty()) out += "  threw: " + thrown + "\n";
             if (j.contains("info") && j["info"].is_array())
                 for (const auto& info : j["info"])
                     if (info.is_string()) out += indent(trim(info.get<std::string>()), "  ");
             said.first_failure = out;
         } else if (event == "message" && said.first_failure.empty() && j.value("severity", "") != "WARNING") {
-            said.first_failure = relative_to_root(setup, j.value("file", "")) + ":" + std::to_string(j.value("line", 0)) +
-                                 ": " + j.value("text", "") + "\n";
+            said.first_failure = relative_to_root(setup, j.value("file", "")) + ":" +
+                                 std::to_string(j.value("line", 0)) + ": " + j.value("text", "") + "\n";
         } else if (event == "exception") {
             said.exception = j.value("text", "");
         } else if (event == "end") {
@@ -91,8 +91,9 @@ std::string build_problem(const Outcome& o, const std::string& what, const std::
         return "the " + what + " took longer than " + format_number(limits.wall_seconds) + " s and was stopped";
     const std::string error = first_error(log);
     if (!error.empty()) return error;
-    if (o.signal) return "the " + what + " was killed by " + signal_name(o.signal) + " (memory limit " +
-                         std::to_string(limits.memory_mb) + " MB?)";
+    if (o.signal)
+        return "the " + what + " was killed by " + signal_name(o.signal) + " (memory limit " +
+               std::to_string(limits.memory_mb) + " MB?)";
     return "the " + what + " failed with exit status " + std::to_string(o.exit_code);
 }
 
@@ -135,11 +136,14 @@ Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Out
            const std::string& verdict_lines, const Test& test, const Options& options) {
     const double limit = options.test_limits.wall_seconds;
     if (!o.started) return {"crash", "could not start the test: " + o.error};
-    if (o.timed_out) return {"timeout", "timed out after " + format_number(limit) + " s and was stopped: an endless loop, or far too much work?"};
-    if (o.signal == SIGXCPU) return {"timeout", "used more than " + format_number(limit) + " s of processor time and was stopped"};
+    if (o.timed_out)
+        return {"timeout", "timed out after " + format_number(limit) +
+                               " s and was stopped: an endless loop, or far too much work?"};
+    if (o.signal == SIGXCPU)
+        return {"timeout", "used more than " + format_number(limit) + " s of processor time and was stopped"};
     if (o.signal == SIGXFSZ)
-        return {"crash", "output limit exceeded: the test wrote more than " + std::to_string(options.test_limits.output_bytes) +
-                             " bytes and was stopped (SIGXFSZ)"};
+        return {"crash", "output limit exceeded: the test wrote more than " +
+                             std::to_string(options.test_limits.output_bytes) + " bytes and was stopped (SIGXFSZ)"};
     if (o.signal) return {"crash", "crashed with " + signal_name(o.signal)};
     if (record_overflow) return {"fail", "the record of the test's calls grew past its limit of 256 MiB"};
     const std::string status = "the process exited with status " + std::to_string(o.exit_code);
@@ -152,10 +156,12 @@ Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Out
         return {"fail", "the replay of the test's record " + why + (said.replay.empty() ? "" : ": " + said.replay)};
     }
     if (!said.replay.empty()) {
-        if (said.replay.find("ends before") != std::string::npos || said.replay.find("stops inside") != std::string::npos ||
+        if (said.replay.find("ends before") != std::string::npos ||
+            said.replay.find("stops inside") != std::string::npos ||
             said.replay.find("left no record") != std::string::npos)
             return {"fail", "the test did not report completion: " + status +
-                                " before the test finished (exit(), quick_exit() or _exit() in the exercise code?); " + said.replay};
+                                " before the test finished (exit(), quick_exit() or _exit() in the exercise code?); " +
+                                said.replay};
         return {"fail", "the test's record does not replay: " + said.replay};
     }
     if (said.success) {
@@ -164,7 +170,8 @@ Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Out
     }
     std::string message = said.first_failure;
     if (message.empty() && !said.exception.empty()) message = "threw an exception: " + said.exception + "\n";
-    if (said.failed_checks > 1) message += "(" + std::to_string(said.failed_checks) + " checks failed in this test; the first is shown)\n";
+    if (said.failed_checks > 1)
+        message += "(" + std::to_string(said.failed_checks) + " checks failed in this test; the first is shown)\n";
     if (message.empty()) message = "the test failed\n";
     if (message.back() == '\n') message.pop_back();
     return {"fail", message};
@@ -202,8 +209,9 @@ std::vector<SubmittedFile> collect_files(const Setup& setup, const Options& opti
         } else if (!S_ISREG(st.st_mode)) {
             f.state = "refused", f.reason = shown + " is not a regular file: refused";
         } else if (st.st_size > options.max_file_bytes) {
-            f.state = "refused", f.reason = shown + " is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
-                                            std::to_string(options.max_file_bytes) + ": refused";
+            f.state = "refused", f.reason = shown + " is " + std::to_string(st.st_size) +
+                                            " bytes, more than the limit of " + std::to_string(options.max_file_bytes) +
+                                            ": refused";
         } else {
             const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK);
             std::string content;
@@ -218,7 +226,8 @@ std::vector<SubmittedFile> collect_files(const Setup& setup, const Options& opti
             if (fd < 0) {
                 f.state = "refused", f.reason = shown + " cannot be read: " + std::strerror(errno);
             } else if (content.size() > static_cast<std::size_t>(options.max_file_bytes)) {
-                f.state = "refused", f.reason = shown + " is more than " + std::to_string(options.max_file_bytes) + " bytes: refused";
+                f.state = "refused",
+                f.reason = shown + " is more than " + std::to_string(options.max_file_bytes) + " bytes: refused";
             } else if (content.find('\0') != std::string::npos) {
                 f.state = "refused", f.reason = shown + " is not a text file (it holds NUL bytes): refused";
             } else {
@@ -233,11 +242,13 @@ std::vector<SubmittedFile> collect_files(const Setup& setup, const Options& opti
 std::string fingerprint(const Setup& setup, const Options& options, const std::vector<SubmittedFile>& files,
                         const std::string& selection) {
     std::ostringstream all;
-    all << setup.fingerprint << "\n" << selection << "\n"
+    all << setup.fingerprint << "\n"
+        << selection << "\n"
         << options.test_limits.wall_seconds << " " << options.test_limits.memory_mb << " "
         << options.test_limits.output_bytes << " " << options.build_limits.wall_seconds << " "
         << options.build_limits.memory_mb << " " << options.max_file_bytes << "\n";
-    for (const auto& f : files) all << f.topic << " " << f.state << " " << f.reason << " " << hex(hash(f.content)) << "\n";
+    for (const auto& f : files)
+        all << f.topic << " " << f.state << " " << f.reason << " " << hex(hash(f.content)) << "\n";
     return hex(hash(all.str()));
 }
 
@@ -344,8 +355,16 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
         r.not_started = true;
         r.message = "not started: todo(\"" + exercise.name + "\") is still in place";
     }
-    TestResult tr{topic.chapter, topic.name, exercise.name, test.name, r.verdict, 0,
-                  share(exercise.points, exercise.tests.size(), k), r.not_started, g.relative(r.message), ""};
+    TestResult tr{topic.chapter,
+                  topic.name,
+                  exercise.name,
+                  test.name,
+                  r.verdict,
+                  0,
+                  share(exercise.points, exercise.tests.size(), k),
+                  r.not_started,
+                  g.relative(r.message),
+                  ""};
     if (tr.verdict == "pass") tr.score = tr.max_score;
     std::string printed = read_file(output_path);
     if (printed.size() > 500) printed = first_lines(printed, 500);
@@ -356,7 +375,8 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
 // Every test of a topic that cannot run (missing, refused, does not build) gets its verdict.
 void grade_unbuilt(const Grading& g, const Topic& topic, const std::string& verdict, const std::string& problem,
                    SubmissionResult& result) {
-    result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
+    result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") +
+                           problem);
     for (const auto& exercise : topic.exercises) {
         if (!g.selected(exercise)) continue;
         for (std::size_t k = 0; k < exercise.tests.size(); ++k)
@@ -432,17 +452,16 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
                            {"exercise", t.exercise},
                            {"not_started", t.not_started}}}});
     }
-    const nlohmann::ordered_json out = {
-        {"score", json_number(r.score)},
-        {"output", summary},
-        {"visibility", "visible"},
-        {"stdout_visibility", "hidden"},
-        {"extra_data",
-         {{"student", r.student},
-          {"max_score", json_number(r.max_score)},
-          {"harness", harness_version},
-          {"fingerprint", r.fingerprint}}},
-        {"tests", tests}};
+    const nlohmann::ordered_json out = {{"score", json_number(r.score)},
+                                        {"output", summary},
+                                        {"visibility", "visible"},
+                                        {"stdout_visibility", "hidden"},
+                                        {"extra_data",
+                                         {{"student", r.student},
+                                          {"max_score", json_number(r.max_score)},
+                                          {"harness", harness_version},
+                                          {"fingerprint", r.fingerprint}}},
+                                        {"tests", tests}};
     return json_text(out);
 }
 
@@ -477,10 +496,14 @@ bool read_results_tsv(const std::string& path, SubmissionResult& r) {
     r = SubmissionResult{};
     for (const auto& line : split(text, '\n')) {
         const auto f = split(line, '\t');
-        if (f[0] == "fingerprint" && f.size() > 1) r.fingerprint = f[1];
-        else if (f[0] == "student" && f.size() > 1) r.student = f[1];
-        else if (f[0] == "json" && f.size() > 1) r.json_hash = f[1];
-        else if (f[0] == "note" && f.size() > 1) r.notes.push_back(f[1]);
+        if (f[0] == "fingerprint" && f.size() > 1)
+            r.fingerprint = f[1];
+        else if (f[0] == "student" && f.size() > 1)
+            r.student = f[1];
+        else if (f[0] == "json" && f.size() > 1)
+            r.json_hash = f[1];
+        else if (f[0] == "note" && f.size() > 1)
+            r.notes.push_back(f[1]);
         else if (f[0] == "test" && f.size() > 9) {
             TestResult t{f[1], f[2], f[3], f[8], f[4], std::stod(f[5]), std::stod(f[6]), f[7] == "1", f[9], ""};
             r.tests.push_back(t);

@@ -14,11 +14,10 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace grading {
 
@@ -26,7 +25,7 @@ inline constexpr const char* harness_version = "workbook_grade 1";
 
 // ---- text and files (util.cpp) ----------------------------------------------------------
 std::string read_file(const std::string& path, bool* ok = nullptr);
-bool write_file(const std::string& path, const std::string& text);         // via a temporary + rename
+bool write_file(const std::string& path, const std::string& text);  // via a temporary + rename
 std::vector<std::string> split(const std::string& s, char separator);
 std::string trim(const std::string& s);
 bool starts_with(const std::string& s, const std::string& prefix);
@@ -34,24 +33,24 @@ bool ends_with(const std::string& s, const std::string& suffix);
 std::string replace_all(std::string s, const std::string& from, const std::string& to);
 // JSON through nlohmann-json: indented, UTF-8 as is (invalid UTF-8 becomes U+FFFD), a final newline.
 std::string json_text(const nlohmann::ordered_json& j);
-double json_number(double x);  // rounded to 4 decimals, as format_number shows it
-std::string format_number(double x);            // at most 4 decimals, no trailing zeros
+double json_number(double x);         // rounded to 4 decimals, as format_number shows it
+std::string format_number(double x);  // at most 4 decimals, no trailing zeros
 std::string first_lines(const std::string& s, std::size_t max_chars);
 std::uint64_t hash(const std::string& data, std::uint64_t seed = 0xcbf29ce484222325ULL);
 std::string hex(std::uint64_t x);
 bool make_dirs(const std::string& path);
 void remove_tree(const std::string& path);
-bool is_directory(const std::string& path);  // a real folder, not a symbolic link to one
+bool is_directory(const std::string& path);                  // a real folder, not a symbolic link to one
 std::vector<std::string> list_dir(const std::string& path);  // sorted names, without . and ..
 std::vector<std::string> shell_split(const std::string& command);
 
 // ---- running a program under limits (sandbox.cpp) -----------------------------------------
 struct Limits {
-    double wall_seconds = 10;           // killed (the whole process group) after this
-    long memory_mb = 1024;              // address space
-    long output_bytes = 1 << 20;        // any file it writes, its output included
-    bool forbid_processes = true;       // no fork, no threads (RLIMIT_NPROC 0)
-    bool isolate = false;               // in the sandbox (see configure_sandbox)
+    double wall_seconds = 10;              // killed (the whole process group) after this
+    long memory_mb = 1024;                 // address space
+    long output_bytes = 1 << 20;           // any file it writes, its output included
+    bool forbid_processes = true;          // no fork, no threads (RLIMIT_NPROC 0)
+    bool isolate = false;                  // in the sandbox (see configure_sandbox)
     std::vector<std::string> environment;  // more NAME=value for the program
 };
 
@@ -69,10 +68,10 @@ Isolation isolation();
 struct Outcome {
     bool started = false;
     bool timed_out = false;
-    int signal = 0;       // the signal that ended it, 0 if it exited
-    int exit_code = -1;   // when it exited
+    int signal = 0;      // the signal that ended it, 0 if it exited
+    int exit_code = -1;  // when it exited
     double seconds = 0;
-    std::string error;    // why it could not start
+    std::string error;  // why it could not start
 };
 
 // Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. With a
@@ -80,9 +79,9 @@ struct Outcome {
 // while it runs (up to report_limit bytes; *report_overflow tells when more came): outside the
 // output limit, and in no file the program could name. With limits.isolate it runs in the
 // sandbox, and cwd only matters without namespaces.
-Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits, std::string* report = nullptr,
-                    std::size_t report_limit = 64u << 20, bool* report_overflow = nullptr);
+Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
+                    const Limits& limits, std::string* report = nullptr, std::size_t report_limit = 64u << 20,
+                    bool* report_overflow = nullptr);
 std::string signal_name(int signal);
 // For a worker: SIGINT, SIGTERM or SIGHUP kills the process group run_limited is waiting for
 // (a compiler and its cc1plus, or a test and its sandbox), then ends the worker.
@@ -101,23 +100,23 @@ struct Exercise {
 };
 
 struct Chapter {
-    std::string label;   // ch01
-    int number = 0;      // 1
-    std::string slug;    // 01_pure_rotations
-    std::string title;   // Pure rotations
+    std::string label;  // ch01
+    int number = 0;     // 1
+    std::string slug;   // 01_pure_rotations
+    std::string title;  // Pure rotations
 };
 
 struct Topic {
     std::string name, chapter;
-    std::string test_file;                  // tests/<topic>_test.cpp, relative to the root
+    std::string test_file;  // tests/<topic>_test.cpp, relative to the root
     std::vector<Exercise> exercises;
-    std::string reference;                  // the reference grader binary
-    std::vector<std::string> objects;       // the grader's compiled tests
-    std::vector<std::string> link;          // what a student's object is linked with
-    std::vector<std::string> compile;       // compile command; @SOURCE@ and @OBJECT@ to fill in
-    std::string replay;                     // the trusted verdict binary (no student code)
-    std::vector<std::string> recorder;      // objects linked into a student's test binary
-    std::vector<std::string> wraps;         // -Wl,--wrap=<symbol>, one per API function the grader calls
+    std::string reference;              // the reference grader binary
+    std::vector<std::string> objects;   // the grader's compiled tests
+    std::vector<std::string> link;      // what a student's object is linked with
+    std::vector<std::string> compile;   // compile command; @SOURCE@ and @OBJECT@ to fill in
+    std::string replay;                 // the trusted verdict binary (no student code)
+    std::vector<std::string> recorder;  // objects linked into a student's test binary
+    std::vector<std::string> wraps;     // -Wl,--wrap=<symbol>, one per API function the grader calls
 };
 
 struct Setup {
@@ -130,8 +129,7 @@ struct Setup {
 };
 
 // Writes the manifest from topics.txt (build time). Returns an empty string or the error.
-std::string make_manifest(const std::string& topics_path, const std::string& points_path,
-                          const std::string& out_path);
+std::string make_manifest(const std::string& topics_path, const std::string& points_path, const std::string& out_path);
 // Writes <out_dir>/record_<topic>.cpp, replay_<topic>.cpp and wrap_<topic>.txt (build time, api.cpp).
 std::string make_api(const std::string& topic, const std::string& nm, const std::string& library,
                      const std::vector<std::string>& objects, const std::string& out_dir);
@@ -153,33 +151,32 @@ struct Options {
 // One topic's file as found in a submission.
 struct SubmittedFile {
     std::string topic;
-    std::string state;    // "ok", "missing" or "refused"
-    std::string reason;   // why it is missing or refused
+    std::string state;   // "ok", "missing" or "refused"
+    std::string reason;  // why it is missing or refused
     std::string content;
 };
 
 // The submission's own folder of .cpp files: <dir>/exercises/ when there is one, else <dir>.
 std::string exercise_folder(const std::string& dir);
-std::vector<SubmittedFile> collect_files(const Setup& setup, const Options& options,
-                                         const std::string& dir);
-std::string fingerprint(const Setup& setup, const Options& options,
-                        const std::vector<SubmittedFile>& files, const std::string& selection);
+std::vector<SubmittedFile> collect_files(const Setup& setup, const Options& options, const std::string& dir);
+std::string fingerprint(const Setup& setup, const Options& options, const std::vector<SubmittedFile>& files,
+                        const std::string& selection);
 
 struct TestResult {
     std::string chapter, topic, exercise, name;
-    std::string verdict;        // pass, fail, timeout, crash, build error, missing
+    std::string verdict;  // pass, fail, timeout, crash, build error, missing
     double score = 0, max_score = 0;
-    bool not_started = false;   // failed on the stub's todo("<exercise>")
-    std::string message;        // why it did not pass (for the student)
-    std::string output;         // what the test printed, truncated
+    bool not_started = false;  // failed on the stub's todo("<exercise>")
+    std::string message;       // why it did not pass (for the student)
+    std::string output;        // what the test printed, truncated
 };
 
 struct SubmissionResult {
     std::string student;
     std::string fingerprint;
-    std::string json_hash;            // of the results .json it was written with (from the .tsv)
+    std::string json_hash;  // of the results .json it was written with (from the .tsv)
     std::vector<TestResult> tests;
-    std::vector<std::string> notes;   // one line per topic that did not build, or was refused
+    std::vector<std::string> notes;  // one line per topic that did not build, or was refused
     double score = 0, max_score = 0;
 };
 
@@ -190,10 +187,9 @@ struct Selection {
     std::string key() const;
 };
 
-SubmissionResult grade_submission(const Setup& setup, const Options& options,
-                                  const std::string& student, const std::vector<SubmittedFile>& files,
-                                  const Selection& selection, const std::string& work_dir,
-                                  const std::string& log_dir);
+SubmissionResult grade_submission(const Setup& setup, const Options& options, const std::string& student,
+                                  const std::vector<SubmittedFile>& files, const Selection& selection,
+                                  const std::string& work_dir, const std::string& log_dir);
 
 std::string results_json(const Setup& setup, const SubmissionResult& result);
 // The completion marker: every verdict and score, and the hash of the results .json written with it.
@@ -210,11 +206,11 @@ struct ClassFiles {
 
 struct SimilarityHit {
     std::string topic, exercise, student;
-    std::string other;                // a submission, or "" for the reference solution
+    std::string other;                 // a submission, or "" for the reference solution
     double score = 0, file_score = 0;  // shared / the smaller fingerprint set, for the exercise and the whole file
     int shared = 0, fingerprints = 0, other_fingerprints = 0, tokens = 0;
-    std::string lines, other_lines;   // the lines the shared fingerprints cover, on each side
-    bool listed = true;               // false: below the report's rules (returned only with `all`)
+    std::string lines, other_lines;  // the lines the shared fingerprints cover, on each side
+    bool listed = true;              // false: below the report's rules (returned only with `all`)
 };
 
 // The pairs the report lists; with `all`, every pair that shares a fingerprint (for measuring).

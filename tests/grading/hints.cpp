@@ -30,16 +30,15 @@ bool starts_with(const std::string& s, const std::string& p) { return s.compare(
 // ---- TeX subset -> Unicode --------------------------------------------------------------------
 const std::map<std::string, std::string>& symbols() {
     static const std::map<std::string, std::string> m = {
-        {"alpha", "α"},   {"beta", "β"},    {"gamma", "γ"},   {"delta", "δ"},  {"epsilon", "ε"},
-        {"varepsilon", "ε"}, {"zeta", "ζ"}, {"eta", "η"},     {"theta", "θ"},  {"kappa", "κ"},
-        {"lambda", "λ"},  {"mu", "μ"},      {"nu", "ν"},      {"xi", "ξ"},     {"pi", "π"},
-        {"rho", "ρ"},     {"sigma", "σ"},   {"tau", "τ"},     {"phi", "φ"},    {"varphi", "φ"},
-        {"chi", "χ"},     {"psi", "ψ"},     {"omega", "ω"},   {"Gamma", "Γ"},  {"Delta", "Δ"},
-        {"Theta", "Θ"},   {"Lambda", "Λ"},  {"Pi", "Π"},      {"Sigma", "Σ"},  {"Phi", "Φ"},
-        {"Psi", "Ψ"},     {"Omega", "Ω"},   {"cdot", "·"},    {"times", "×"},  {"top", "ᵀ"},
-        {"le", "≤"},      {"ge", "≥"},      {"ne", "≠"},      {"approx", "≈"}, {"pm", "±"},
-        {"to", "→"},      {"lVert", "‖"},   {"rVert", "‖"},   {"lvert", "|"},   {"rvert", "|"},   {"langle", "⟨"}, {"rangle", "⟩"},
-        {"infty", "∞"},   {"sum", "Σ"},     {"quad", " "},
+        {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"},  {"delta", "δ"},  {"epsilon", "ε"}, {"varepsilon", "ε"},
+        {"zeta", "ζ"},  {"eta", "η"},    {"theta", "θ"},  {"kappa", "κ"},  {"lambda", "λ"},  {"mu", "μ"},
+        {"nu", "ν"},    {"xi", "ξ"},     {"pi", "π"},     {"rho", "ρ"},    {"sigma", "σ"},   {"tau", "τ"},
+        {"phi", "φ"},   {"varphi", "φ"}, {"chi", "χ"},    {"psi", "ψ"},    {"omega", "ω"},   {"Gamma", "Γ"},
+        {"Delta", "Δ"}, {"Theta", "Θ"},  {"Lambda", "Λ"}, {"Pi", "Π"},     {"Sigma", "Σ"},   {"Phi", "Φ"},
+        {"Psi", "Ψ"},   {"Omega", "Ω"},  {"cdot", "·"},   {"times", "×"},  {"top", "ᵀ"},     {"le", "≤"},
+        {"ge", "≥"},    {"ne", "≠"},     {"approx", "≈"}, {"pm", "±"},     {"to", "→"},      {"lVert", "‖"},
+        {"rVert", "‖"}, {"lvert", "|"},  {"rvert", "|"},  {"langle", "⟨"}, {"rangle", "⟩"},  {"infty", "∞"},
+        {"sum", "Σ"},   {"quad", " "},
     };
     return m;
 }
@@ -51,16 +50,16 @@ const std::map<std::string, std::string>& functions() {
 }
 const std::map<char, std::string>& superscripts() {
     static const std::map<char, std::string> m = {
-        {'0', "⁰"}, {'1', "¹"}, {'2', "²"}, {'3', "³"}, {'4', "⁴"}, {'5', "⁵"}, {'6', "⁶"}, {'7', "⁷"},
-        {'8', "⁸"}, {'9', "⁹"}, {'+', "⁺"}, {'-', "⁻"}, {'a', "ᵃ"}, {'b', "ᵇ"}, {'n', "ⁿ"}, {'i', "ⁱ"},
-        {'p', "ᵖ"}, {'k', "ᵏ"}, {'T', "ᵀ"},
+        {'0', "⁰"}, {'1', "¹"}, {'2', "²"}, {'3', "³"}, {'4', "⁴"}, {'5', "⁵"}, {'6', "⁶"},
+        {'7', "⁷"}, {'8', "⁸"}, {'9', "⁹"}, {'+', "⁺"}, {'-', "⁻"}, {'a', "ᵃ"}, {'b', "ᵇ"},
+        {'n', "ⁿ"}, {'i', "ⁱ"}, {'p', "ᵖ"}, {'k', "ᵏ"}, {'T', "ᵀ"},
     };
     return m;
 }
 const std::map<char, std::string>& subscripts() {
     static const std::map<char, std::string> m = {
-        {'0', "₀"}, {'1', "₁"}, {'2', "₂"}, {'3', "₃"}, {'4', "₄"}, {'5', "₅"}, {'6', "₆"},
-        {'7', "₇"}, {'8', "₈"}, {'9', "₉"}, {'+', "₊"}, {'-', "₋"},
+        {'0', "₀"}, {'1', "₁"}, {'2', "₂"}, {'3', "₃"}, {'4', "₄"}, {'5', "₅"},
+        {'6', "₆"}, {'7', "₇"}, {'8', "₈"}, {'9', "₉"}, {'+', "₊"}, {'-', "₋"},
     };
     return m;
 }
@@ -119,8 +118,10 @@ private:
                 continue;
             }
             const auto it = table.find(arg[k]);
-            if (it == table.end()) all = false;
-            else mapped += it->second;
+            if (it == table.end())
+                all = false;
+            else
+                mapped += it->second;
         }
         if (all) return mapped;
         return std::string(up ? "^" : "_") + (up ? wrap(arg) : arg);
@@ -139,7 +140,8 @@ private:
         const std::string name = s_.substr(b, i_ - b);
         if (name == "lVert" || name == "lvert" || name == "langle")  // an opening delimiter: no space after it
             while (i_ < s_.size() && s_[i_] == ' ') ++i_;
-        if (name == "rVert" || name == "rvert" || name == "rangle") return "\x02" + symbols().at(name);  // closing: none before it
+        if (name == "rVert" || name == "rvert" || name == "rangle")
+            return "\x02" + symbols().at(name);  // closing: none before it
         if (const auto it = symbols().find(name); it != symbols().end()) return it->second;
         if (const auto it = functions().find(name); it != functions().end()) return "\x03" + it->second + "\x01";
         if (name == "mathbf" || name == "boldsymbol" || name == "mathrm") return argument();
@@ -165,11 +167,16 @@ private:
                 break;
             }
             std::string piece;
-            if (c == '\\') piece = command();
-            else if (c == '{') ++i_, piece = group_until('}');
-            else if (c == '^') ++i_, piece = script(true);
-            else if (c == '_') ++i_, piece = script(false);
-            else piece = std::string(1, c), ++i_;
+            if (c == '\\')
+                piece = command();
+            else if (c == '{')
+                ++i_, piece = group_until('}');
+            else if (c == '^')
+                ++i_, piece = script(true);
+            else if (c == '_')
+                ++i_, piece = script(false);
+            else
+                piece = std::string(1, c), ++i_;
             append(out, piece);
         }
         return out;
@@ -184,7 +191,8 @@ private:
         }
         if (starts_with(piece, "\x03")) {
             piece.erase(0, 1);
-            if (!out.empty() && out.back() != ' ' && out.back() != '(' && out.back() != '/' && out.back() != '\x01') out += ' ';
+            if (!out.empty() && out.back() != ' ' && out.back() != '(' && out.back() != '/' && out.back() != '\x01')
+                out += ' ';
         }
         if (!out.empty() && out.find('_') != std::string::npos && is_letter_start(piece) &&
             std::isalnum(static_cast<unsigned char>(out.back()))) {
@@ -326,9 +334,9 @@ private:
     std::string text(std::size_t n, const std::string& line) {
         if (!current_) return "";
         if (current_->levels.empty())
-            return trim(line).empty() ? ""
-                                      : at(n, "text before '#### Hint 1' in '" + current_->exercise +
-                                                  "': every hint is in a level");
+            return trim(line).empty()
+                       ? ""
+                       : at(n, "text before '#### Hint 1' in '" + current_->exercise + "': every hint is in a level");
         current_->levels.back() += line + "\n";
         return "";
     }
@@ -376,9 +384,12 @@ std::string plain_text(const std::string& markdown) {
     for (const auto& line : lines_of(markdown)) {
         std::string converted;
         segments(line, [&](const std::string& piece, char kind) {
-            if (kind == 'c') converted += piece;
-            else if (kind == 'm') converted += math_to_text(piece);
-            else converted += std::regex_replace(piece, std::regex("\\*\\*"), "");
+            if (kind == 'c')
+                converted += piece;
+            else if (kind == 'm')
+                converted += math_to_text(piece);
+            else
+                converted += std::regex_replace(piece, std::regex("\\*\\*"), "");
         });
         out += converted + "\n";
     }
@@ -403,7 +414,8 @@ std::string tex_left(const std::string& text) {
 
 // ---- the nudge rule ------------------------------------------------------------------------------
 std::string code_in_nudge(const std::string& markdown) {
-    const std::regex name("`(~?[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*|[A-Za-z0-9_./-]+/[A-Za-z0-9_./-]*|[A-Za-z_]+:)`");
+    const std::regex name(
+        "`(~?[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*|[A-Za-z0-9_./-]+/[A-Za-z0-9_./-]*|[A-Za-z_]+:)`");
     const std::regex eigen_alias("\\b(Mat3|Vec3|VecX|Eigen|MatrixXd|VectorXd)\\b");
     const std::regex call("\\b[A-Za-z_][A-Za-z0-9_]*\\([^)]*\\)");
     const std::regex cpp("<<|==|!=|->|&&|\\|\\||\\+=|-=|::|;\\s*$|\\breturn\\b|\\bauto\\b|\\bconst\\b");
@@ -415,17 +427,23 @@ std::string code_in_nudge(const std::string& markdown) {
             if (found.empty()) found = "a code block";
             continue;
         }
-        if (starts_with(line, "    ") && !trim(line).empty() && found.empty()) found = "an indented code block: '" + trim(line) + "'";
+        if (starts_with(line, "    ") && !trim(line).empty() && found.empty())
+            found = "an indented code block: '" + trim(line) + "'";
         segments(line, [&](const std::string& piece, char kind) {
             if (!found.empty()) return;
             std::smatch m;
             if (kind == 'c') {
-                if (!std::regex_match(piece, name)) found = "code " + piece;
-                else if (std::regex_search(piece, m, eigen_alias)) found = "an Eigen type " + piece;
+                if (!std::regex_match(piece, name))
+                    found = "code " + piece;
+                else if (std::regex_search(piece, m, eigen_alias))
+                    found = "an Eigen type " + piece;
             } else if (kind == 't') {
-                if (std::regex_search(piece, m, call)) found = "a call " + m.str();
-                else if (std::regex_search(piece, m, eigen_alias)) found = "an Eigen name " + m.str();
-                else if (std::regex_search(piece, m, cpp)) found = "C++ '" + trim(m.str()) + "' in '" + trim(piece) + "'";
+                if (std::regex_search(piece, m, call))
+                    found = "a call " + m.str();
+                else if (std::regex_search(piece, m, eigen_alias))
+                    found = "an Eigen name " + m.str();
+                else if (std::regex_search(piece, m, cpp))
+                    found = "C++ '" + trim(m.str()) + "' in '" + trim(piece) + "'";
             }
         });
     }

@@ -19,13 +19,13 @@ namespace hints {
 
 struct Ladder {
     std::string exercise;
-    int line = 0;                      // of its ### heading
-    std::vector<std::string> levels;   // the Markdown of Hint 1, Hint 2 (and Hint 3)
+    int line = 0;                     // of its ### heading
+    std::vector<std::string> levels;  // the Markdown of Hint 1, Hint 2 (and Hint 3)
 };
 
 struct Hints {
     std::vector<Ladder> ladders;
-    std::string error;                 // empty, or "<file>:<line>: what is wrong"
+    std::string error;  // empty, or "<file>:<line>: what is wrong"
 };
 
 // Reads the ladders of a hints file; on a malformed file, `error` names the line and the rule.

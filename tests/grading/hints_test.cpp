@@ -1,14 +1,15 @@
 // The hint ladders' own tests (hints.hpp): the nudge rule catches planted code, the printer
 // leaves no TeX, and the reader rejects a malformed file with a message naming the line.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
-#include <doctest/doctest.h>
-
 #include "hints.hpp"
+
+#include <doctest/doctest.h>
 
 namespace {
 const char* good =
     "# Hints\n\nIntro text.\n\n## Chapter 1\n\nA chapter note.\n\n"
-    "### hat\n\n#### Hint 1\nThe matrix $\\hat{w}$ is defined by $\\hat{w}\\,x = w \\times x$; see `rigid/rotation.hpp`.\n\n"
+    "### hat\n\n#### Hint 1\nThe matrix $\\hat{w}$ is defined by $\\hat{w}\\,x = w \\times x$; see "
+    "`rigid/rotation.hpp`.\n\n"
     "#### Hint 2\nPlace $w_1$, $w_2$, $w_3$.\n\n#### Hint 3\n`W << 0, -w.z(), w.y(), ...;`\n\n"
     "### vee\n\n#### Hint 1\nUse `hat` backwards: $\\Omega_k = -\\tfrac{1}{2}\\epsilon_{kij}W_{ij}$.\n\n"
     "#### Hint 2\nAverage the pair.\n";
@@ -32,14 +33,17 @@ TEST_CASE("the reader rejects a malformed file with the line and the rule") {
     };
     const Case cases[] = {
         {"### hat\n\n#### Hint 1\nA nudge.\n", "hints.md:4: the hints of 'hat' have 1 level(s); a ladder has 2 or 3"},
-        {"### hat\nOld-style text.\n#### Hint 1\na\n#### Hint 2\nb\n", "hints.md:2: text before '#### Hint 1' in 'hat'"},
+        {"### hat\nOld-style text.\n#### Hint 1\na\n#### Hint 2\nb\n",
+         "hints.md:2: text before '#### Hint 1' in 'hat'"},
         {"### hat\n#### Hint 2\na\n", "hints.md:2: '#### Hint 2' in 'hat': expected #### Hint 1"},
         {"### hat\n#### Hint 1\na\n#### Hint 3\nb\n", "hints.md:4: '#### Hint 3' in 'hat': expected #### Hint 2"},
-        {"### hat\n#### Hint 1\na\n#### Hint 2\nb\n#### Hint 3\nc\n#### Hint 4\nd\n", "hints.md:8: 'hat' has more than 3 levels"},
+        {"### hat\n#### Hint 1\na\n#### Hint 2\nb\n#### Hint 3\nc\n#### Hint 4\nd\n",
+         "hints.md:8: 'hat' has more than 3 levels"},
         {"### hat\n#### Hint 1\na\n#### Note\nb\n", "hints.md:4: '#### Note': the only level-4 headings are"},
         {"#### Hint 1\na\n", "hints.md:1: '#### Hint 1' outside an exercise's ### section"},
         {"### hat\n#### Hint 1\na\n#### Hint 2\n\n### vee\n", "hints.md:1: Hint 2 of 'hat' is empty"},
-        {"### hat\n#### Hint 1\na\n#### Hint 2\nb\n### hat\n#### Hint 1\na\n#### Hint 2\nb\n", "hints.md:6: 'hat' has a second ### section"},
+        {"### hat\n#### Hint 1\na\n#### Hint 2\nb\n### hat\n#### Hint 1\na\n#### Hint 2\nb\n",
+         "hints.md:6: 'hat' has a second ### section"},
         {"### hat w\n", "hints.md:1: '### hat w' is not an exercise name"},
         {"### hat\n#### Hint 1\n```\ncode\n", "a code block (```) is not closed"},
     };
@@ -67,7 +71,8 @@ TEST_CASE("the terminal printer turns the TeX subset into plain text") {
         {"$\\frac{a}{b}$, $\\tfrac{x^2}{720}$", "a/b, x²/720"},
         {"$\\sin\\varphi\\,\\mathbf{a}$", "sin φ a"},
         {"$\\cos\\tfrac{\\varphi}{2}$", "cos(φ/2)"},
-        {"$\\theta \\le \\pi$, $x \\ge 0$, $a \\ne b$, $x \\approx y$, $\\pm 1$, $t \\to 0$", "θ ≤ π, x ≥ 0, a ≠ b, x ≈ y, ± 1, t → 0"},
+        {"$\\theta \\le \\pi$, $x \\ge 0$, $a \\ne b$, $x \\approx y$, $\\pm 1$, $t \\to 0$",
+         "θ ≤ π, x ≥ 0, a ≠ b, x ≈ y, ± 1, t → 0"},
         {"$\\langle a, b\\rangle$", "⟨a, b⟩"},
         {"$\\arccos x$, $J^{-1}$, $10^{-16}$", "arccos x, J⁻¹, 10⁻¹⁶"},
         {"$\\hat{J\\Omega}$", "hat(JΩ)"},
@@ -116,7 +121,8 @@ TEST_CASE("the nudge rule finds code of the answer in a planted level-1 hint") {
         CHECK(hints::code_in_nudge(text).empty());
     }
     // And lint() reports it against the ladder, naming the exercise and the level.
-    const hints::Hints h = hints::parse("### body_angular_velocity\n#### Hint 1\n`vee(R.transpose() * R_dot)`\n#### Hint 2\nb\n", "hints.md");
+    const hints::Hints h = hints::parse(
+        "### body_angular_velocity\n#### Hint 1\n`vee(R.transpose() * R_dot)`\n#### Hint 2\nb\n", "hints.md");
     REQUIRE(h.error.empty());
     const auto problems = hints::lint(h.ladders[0], "hints.md");
     REQUIRE(problems.size() == 1);

@@ -25,7 +25,8 @@ grading::SubmissionResult one_result(const std::string& student, const std::stri
 }  // namespace
 
 TEST_CASE("json: a surrogate pair escape reads as the character outside the BMP") {
-    const auto file = std::filesystem::temp_directory_path() / ("workbook_json_test_" + std::to_string(::getpid()) + ".json");
+    const auto file =
+        std::filesystem::temp_directory_path() / ("workbook_json_test_" + std::to_string(::getpid()) + ".json");
     prose::write_text(file, R"({"run": {"name": "default", "args": []}, "label": "\ud83d\ude00 \u03a9"})");
     const auto j = prose::read_json(file);
     std::filesystem::remove(file);

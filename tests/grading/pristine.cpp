@@ -9,7 +9,7 @@ namespace grading {
 
 std::string pristine_stub(const Setup& setup, const std::string& topic) {
     const std::string copy = setup.build + "/pristine/exercises/" + topic + ".cpp";
-    struct stat st{};
+    struct stat st {};
     if (stat(copy.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return copy;
     return setup.root + "/exercises/" + topic + ".cpp";
 }

@@ -35,18 +35,28 @@ ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, co
         ++s.total;
         s.score += t.score;
         ++verdicts[t.verdict];
-        if (t.verdict == "pass") ++s.passed;
-        else if (!s.first_problem) s.first_problem = &t;
+        if (t.verdict == "pass")
+            ++s.passed;
+        else if (!s.first_problem)
+            s.first_problem = &t;
         not_started += t.not_started;
     }
-    if (s.total == 0) s.status = "";
-    else if (s.passed == s.total) s.status = "pass";
-    else if (verdicts["build error"]) s.status = "build error";
-    else if (verdicts["missing"]) s.status = "missing";
-    else if (not_started == s.total) s.status = "not started";
-    else if (verdicts["crash"]) s.status = "crash";
-    else if (verdicts["timeout"]) s.status = "timeout";
-    else s.status = "fail";
+    if (s.total == 0)
+        s.status = "";
+    else if (s.passed == s.total)
+        s.status = "pass";
+    else if (verdicts["build error"])
+        s.status = "build error";
+    else if (verdicts["missing"])
+        s.status = "missing";
+    else if (not_started == s.total)
+        s.status = "not started";
+    else if (verdicts["crash"])
+        s.status = "crash";
+    else if (verdicts["timeout"])
+        s.status = "timeout";
+    else
+        s.status = "fail";
     return s;
 }
 
@@ -82,10 +92,11 @@ std::string class_summary(const Setup& setup, const std::vector<SubmissionResult
     std::string out = "# Grading summary\n\n";
     out += std::to_string(results.size()) + " submissions, graded on " + std::to_string(setup.topics.size()) +
            " topics, " + std::to_string(exercises) + " exercises, " + std::to_string(tests) + " tests, " +
-           format_number(points) + " points (harness " + harness_version + ", instructor files " +
-           setup.fingerprint + ").\n\n";
-    out += "Verdicts are counted per test. Per-student results: `results/<student>.json` (Gradescope's\n"
-           "results.json format); build logs: `logs/<student>/`; all scores: `class.csv`.\n\n";
+           format_number(points) + " points (harness " + harness_version + ", instructor files " + setup.fingerprint +
+           ").\n\n";
+    out +=
+        "Verdicts are counted per test. Per-student results: `results/<student>.json` (Gradescope's\n"
+        "results.json format); build logs: `logs/<student>/`; all scores: `class.csv`.\n\n";
     out += "| Student | Score | Pass | Fail | Timeout | Crash | Build error | Missing |\n";
     out += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& r : results) {
@@ -107,8 +118,9 @@ std::string class_summary(const Setup& setup, const std::vector<SubmissionResult
                 not_started += s == "not started";
             }
             out += "| " + (c ? std::to_string(c->number) + ". " + md_cell(c->title) : topic.chapter) + " | `" + e.name +
-                   "` | " + format_number(e.points) + " | " + std::to_string(pass) + " | " + std::to_string(not_started) +
-                   " | " + std::to_string(static_cast<int>(results.size()) - pass - not_started) + " |\n";
+                   "` | " + format_number(e.points) + " | " + std::to_string(pass) + " | " +
+                   std::to_string(not_started) + " | " +
+                   std::to_string(static_cast<int>(results.size()) - pass - not_started) + " |\n";
         }
     }
     bool any = false;

@@ -2,19 +2,19 @@
 // whole group, rlimits on address space, CPU, file size, core files and (for tests) process
 // count, stdin from /dev/null, stdout and stderr into a file. Linux (Debian 12).
 #include <fcntl.h>
+#include <grp.h>
 #include <poll.h>
 #include <signal.h>
-#include <grp.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <csignal>
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <thread>
@@ -42,24 +42,42 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 
 std::string signal_name(int signal) {
     switch (signal) {
-        case SIGSEGV: return "SIGSEGV";
-        case SIGABRT: return "SIGABRT";
-        case SIGFPE: return "SIGFPE";
-        case SIGILL: return "SIGILL";
-        case SIGBUS: return "SIGBUS";
-        case SIGKILL: return "SIGKILL";
-        case SIGTERM: return "SIGTERM";
-        case SIGXCPU: return "SIGXCPU";
-        case SIGXFSZ: return "SIGXFSZ";
-        case SIGPIPE: return "SIGPIPE";
-        case SIGTRAP: return "SIGTRAP";
-        case SIGSYS: return "SIGSYS";
-        case SIGINT: return "SIGINT";
-        case SIGHUP: return "SIGHUP";
-        case SIGALRM: return "SIGALRM";
-        case SIGUSR1: return "SIGUSR1";
-        case SIGUSR2: return "SIGUSR2";
-        default: return "signal " + std::to_string(signal);
+        case SIGSEGV:
+            return "SIGSEGV";
+        case SIGABRT:
+            return "SIGABRT";
+        case SIGFPE:
+            return "SIGFPE";
+        case SIGILL:
+            return "SIGILL";
+        case SIGBUS:
+            return "SIGBUS";
+        case SIGKILL:
+            return "SIGKILL";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGXCPU:
+            return "SIGXCPU";
+        case SIGXFSZ:
+            return "SIGXFSZ";
+        case SIGPIPE:
+            return "SIGPIPE";
+        case SIGTRAP:
+            return "SIGTRAP";
+        case SIGSYS:
+            return "SIGSYS";
+        case SIGINT:
+            return "SIGINT";
+        case SIGHUP:
+            return "SIGHUP";
+        case SIGALRM:
+            return "SIGALRM";
+        case SIGUSR1:
+            return "SIGUSR1";
+        case SIGUSR2:
+            return "SIGUSR2";
+        default:
+            return "signal " + std::to_string(signal);
     }
 }
 
@@ -72,13 +90,39 @@ const char* const prlimit = "/usr/bin/prlimit";
 
 // Everything the sandboxed program sees, after the bubblewrap path.
 std::vector<std::string> bwrap_arguments(const std::string& name, long tmp_bytes) {
-    std::vector<std::string> a = {
-        bwrap,           "--unshare-all",  "--die-with-parent", "--new-session", "--cap-drop", "ALL",
-        "--ro-bind",     "/usr",           "/usr",              "--symlink",     "usr/lib",    "/lib",
-        "--symlink",     "usr/lib64",      "/lib64",            "--symlink",     "usr/bin",    "/bin",
-        "--proc",        "/proc",          "--dev",             "/dev",          "--size",     std::to_string(tmp_bytes),
-        "--tmpfs",       "/work",          "--chdir",           "/work",         "--perms",    "0555",
-        "--ro-bind-data", "4",             "/run/test/" + name};
+    std::vector<std::string> a = {bwrap,
+                                  "--unshare-all",
+                                  "--die-with-parent",
+                                  "--new-session",
+                                  "--cap-drop",
+                                  "ALL",
+                                  "--ro-bind",
+                                  "/usr",
+                                  "/usr",
+                                  "--symlink",
+                                  "usr/lib",
+                                  "/lib",
+                                  "--symlink",
+                                  "usr/lib64",
+                                  "/lib64",
+                                  "--symlink",
+                                  "usr/bin",
+                                  "/bin",
+                                  "--proc",
+                                  "/proc",
+                                  "--dev",
+                                  "/dev",
+                                  "--size",
+                                  std::to_string(tmp_bytes),
+                                  "--tmpfs",
+                                  "/work",
+                                  "--chdir",
+                                  "/work",
+                                  "--perms",
+                                  "0555",
+                                  "--ro-bind-data",
+                                  "4",
+                                  "/run/test/" + name};
     if (access(prlimit, X_OK) == 0) a.insert(a.end(), {prlimit, "--nproc=0:0", "--core=0:0"});
     return a;
 }
@@ -129,13 +173,15 @@ std::string configure_sandbox() {
                 return std::string("sandbox: bubblewrap namespaces") + (geteuid() == 0 ? ", as the user nobody" : "");
             mode = Isolation::limits_only;
             if (geteuid() == 0) mode = Isolation::user;
-            return "sandbox: bubblewrap does not work here (" + (said.empty() ? "exit " + std::to_string(o.exit_code) : said) +
-                   "); tests run " + (geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
+            return "sandbox: bubblewrap does not work here (" +
+                   (said.empty() ? "exit " + std::to_string(o.exit_code) : said) + "); tests run " +
+                   (geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
         }
     }
     if (geteuid() == 0) mode = Isolation::user;
-    return std::string(allowed ? "sandbox: no bubblewrap (apt-get install bubblewrap)" : "sandbox: bubblewrap not used (WORKBOOK_GRADE_NO_BWRAP)") + "; tests run " +
-           std::string(geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
+    return std::string(allowed ? "sandbox: no bubblewrap (apt-get install bubblewrap)"
+                               : "sandbox: bubblewrap not used (WORKBOOK_GRADE_NO_BWRAP)") +
+           "; tests run " + std::string(geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
 }
 
 namespace {
@@ -220,7 +266,7 @@ int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int
     dup2(in, 0);
     dup2(out, 1);
     dup2(out, 2);
-    if (with_report) dup2(report_end, 3);  // without O_CLOEXEC: the program keeps it
+    if (with_report) dup2(report_end, 3);     // without O_CLOEXEC: the program keeps it
     if (l.namespaces) dup2(program_copy, 4);  // bubblewrap reads it, then closes it
     const int first_closed = l.namespaces ? 5 : with_report ? 4 : 3;
     for (int fd = first_closed; fd < 1024; ++fd)
@@ -253,8 +299,10 @@ int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int
     if (l.as_nobody && !drop_to_nobody()) exec_failed(report);
     // In the namespaces, bubblewrap needs its own processes; the limit is set inside.
     if (limits.forbid_processes && !l.namespaces) set_limit(RLIMIT_NPROC, 0, 0);
-    if (l.as_nobody && !l.namespaces) fexecve(program_copy, l.args.data(), l.env.data());
-    else execve(l.args[0], l.args.data(), l.env.data());
+    if (l.as_nobody && !l.namespaces)
+        fexecve(program_copy, l.args.data(), l.env.data());
+    else
+        execve(l.args[0], l.args.data(), l.env.data());
     exec_failed(report);
 }
 
@@ -269,8 +317,10 @@ struct ReportReader {
         char buffer[65536];
         ssize_t n;
         while ((n = read(fd, buffer, sizeof buffer)) > 0) {
-            if (text->size() + static_cast<std::size_t>(n) <= limit) text->append(buffer, static_cast<std::size_t>(n));
-            else if (overflow) *overflow = true;
+            if (text->size() + static_cast<std::size_t>(n) <= limit)
+                text->append(buffer, static_cast<std::size_t>(n));
+            else if (overflow)
+                *overflow = true;
         }
     }
 };
@@ -278,8 +328,7 @@ struct ReportReader {
 // Waits for the child until `deadline` (then kills its group), reading its report meanwhile.
 // Returns its wait status; sets *timed_out.
 template <class Deadline>
-int wait_until(pid_t pid, Deadline deadline, const ReportReader& report,
-               bool* timed_out) {
+int wait_until(pid_t pid, Deadline deadline, const ReportReader& report, bool* timed_out) {
     int status = 0;
     auto pause = std::chrono::microseconds(200);
     for (;;) {
@@ -290,7 +339,8 @@ int wait_until(pid_t pid, Deadline deadline, const ReportReader& report,
             *timed_out = true;
             kill(-pid, SIGKILL);
             kill(pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
             break;
         }
         if (report.text) {
@@ -309,17 +359,18 @@ int wait_until(pid_t pid, Deadline deadline, const ReportReader& report,
 // as the exit status 128 + n.
 void record_end(int status, bool namespaces, Outcome& outcome) {
     outcome.started = true;
-    if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
-    else if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status))
+        outcome.signal = WTERMSIG(status);
+    else if (WIFEXITED(status))
+        outcome.exit_code = WEXITSTATUS(status);
     if (namespaces && outcome.exit_code > 128 && outcome.exit_code < 128 + NSIG)
         outcome.signal = outcome.exit_code - 128, outcome.exit_code = -1;
 }
 
 }  // namespace
 
-Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd,
-                    const std::string& output_path, const Limits& limits, std::string* report_text,
-                    std::size_t report_limit, bool* report_overflow) {
+Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
+                    const Limits& limits, std::string* report_text, std::size_t report_limit, bool* report_overflow) {
     Outcome outcome;
     if (report_overflow) *report_overflow = false;
     if (report_text) report_text->clear();
@@ -350,8 +401,8 @@ Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd
     int exec_errno = 0;
     const bool exec_failed = read(pipes.exec[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
     close(pipes.exec[0]);
-    const int status = wait_until(pid, start + std::chrono::duration<double>(limits.wall_seconds), report,
-                                  &outcome.timed_out);
+    const int status =
+        wait_until(pid, start + std::chrono::duration<double>(limits.wall_seconds), report, &outcome.timed_out);
     kill(-pid, SIGKILL);  // anything it left behind in its group
     running_group = 0;
     if (report_text) {

@@ -5,9 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "grading.hpp"
 
@@ -69,8 +68,8 @@ std::string compile_template(const std::string& compile_commands, const std::vec
 
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
-    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid", "exercises/provided/rigid",
-                               "solutions", "solutions/reference"}) {
+    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid",
+                               "exercises/provided/rigid", "solutions", "solutions/reference"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
@@ -117,7 +116,8 @@ std::string read_points(const std::string& points_path, std::map<std::string, do
         std::istringstream in(line);
         std::string name;
         double p = -1;
-        if (!(in >> name >> p) || p < 0) return points_path + ":" + std::to_string(number) + ": expected '<exercise> <points>'";
+        if (!(in >> name >> p) || p < 0)
+            return points_path + ":" + std::to_string(number) + ": expected '<exercise> <points>'";
         points[name] = p;
         used[name] = false;
     }
@@ -148,17 +148,20 @@ std::string list_exercises(const Listed& t, const std::string& root, const std::
     Limits limits;
     limits.wall_seconds = 60;
     limits.forbid_processes = false;
-    const Outcome o = run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
+    const Outcome o =
+        run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
     const std::string listing = read_file(work);
     std::remove(work.c_str());
-    if (!o.started || o.exit_code != 0) return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
+    if (!o.started || o.exit_code != 0)
+        return "cannot list the tests of " + t.reference + (o.error.empty() ? "" : ": " + o.error);
     const std::string test_file = "tests/" + t.topic + "_test.cpp";
     for (const auto& line : split(listing, '\n')) {
         const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
         if (!j.is_object() || !j.contains("test")) continue;
         const std::string filename = j.value("file", "");
         // The path as the compiler saw it: absolute, or relative when a compiler cache rewrote it.
-        if (filename != root + "/" + test_file && !ends_with(filename, "/" + test_file) && filename != test_file) continue;
+        if (filename != root + "/" + test_file && !ends_with(filename, "/" + test_file) && filename != test_file)
+            continue;
         const std::string name = j.value("test", "");
         const auto colon = name.find(':');
         if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
@@ -188,8 +191,7 @@ std::string chapter_line(const std::string& label, const std::map<std::string, C
 
 }  // namespace
 
-std::string make_manifest(const std::string& topics_path, const std::string& points_path,
-                          const std::string& out_path) {
+std::string make_manifest(const std::string& topics_path, const std::string& points_path, const std::string& out_path) {
     bool ok = false;
     const std::string facts = read_file(topics_path, &ok);
     if (!ok) return "cannot read " + topics_path;
@@ -197,10 +199,14 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
     std::vector<Listed> topics;
     for (const auto& line : split(facts, '\n')) {
         const auto f = split(line, '\t');
-        if (f[0] == "root" && f.size() > 1) root = f[1];
-        else if (f[0] == "contents" && f.size() > 1) contents = f[1];
-        else if (f[0] == "topic" && f.size() > 2) topics.push_back({f[1], f[2], ""});
-        else if (f[0] == "reference" && f.size() > 1 && !topics.empty()) topics.back().reference = f[1];
+        if (f[0] == "root" && f.size() > 1)
+            root = f[1];
+        else if (f[0] == "contents" && f.size() > 1)
+            contents = f[1];
+        else if (f[0] == "topic" && f.size() > 2)
+            topics.push_back({f[1], f[2], ""});
+        else if (f[0] == "reference" && f.size() > 1 && !topics.empty())
+            topics.back().reference = f[1];
     }
     std::map<std::string, double> points;
     std::map<std::string, bool> used;
@@ -241,14 +247,22 @@ void read_build_facts(const std::string& facts, Setup& setup, std::string& compi
     std::string current;
     for (const auto& line : split(facts, '\n')) {
         auto f = split(line, '\t');
-        if (f[0] == "root" && f.size() > 1) setup.root = f[1];
-        else if (f[0] == "build" && f.size() > 1) setup.build = f[1];
-        else if (f[0] == "compiler" && f.size() > 1) setup.compiler = f[1];
-        else if (f[0] == "nm" && f.size() > 1) setup.nm = f[1];
-        else if (f[0] == "compile_commands" && f.size() > 1) compile_commands = f[1];
-        else if (f[0] == "link_flags" && f.size() > 1) setup.link_flags = shell_split(f[1]);
-        else if (f[0] == "topic" && f.size() > 2) current = f[1], built[current].name = f[1];
-        else if (f[0] == "reference" && f.size() > 1) built[current].reference = f[1];
+        if (f[0] == "root" && f.size() > 1)
+            setup.root = f[1];
+        else if (f[0] == "build" && f.size() > 1)
+            setup.build = f[1];
+        else if (f[0] == "compiler" && f.size() > 1)
+            setup.compiler = f[1];
+        else if (f[0] == "nm" && f.size() > 1)
+            setup.nm = f[1];
+        else if (f[0] == "compile_commands" && f.size() > 1)
+            compile_commands = f[1];
+        else if (f[0] == "link_flags" && f.size() > 1)
+            setup.link_flags = shell_split(f[1]);
+        else if (f[0] == "topic" && f.size() > 2)
+            current = f[1], built[current].name = f[1];
+        else if (f[0] == "reference" && f.size() > 1)
+            built[current].reference = f[1];
         else if ((f[0] == "objects" || f[0] == "link") && !current.empty()) {
             auto& list = f[0] == "objects" ? built[current].objects : built[current].link;
             for (std::size_t k = 1; k < f.size(); ++k)
@@ -267,9 +281,12 @@ std::string read_replay_facts(const std::string& dir, std::map<std::string, Topi
     std::string current;
     for (const auto& line : split(replay_facts, '\n')) {
         const auto f = split(line, '\t');
-        if (f[0] == "topic" && f.size() > 1) current = f[1];
-        else if (current.empty() || !built.count(current)) continue;
-        else if (f[0] == "replay" && f.size() > 1) built[current].replay = f[1];
+        if (f[0] == "topic" && f.size() > 1)
+            current = f[1];
+        else if (current.empty() || !built.count(current))
+            continue;
+        else if (f[0] == "replay" && f.size() > 1)
+            built[current].replay = f[1];
         else if (f[0] == "recorder") {
             for (std::size_t k = 1; k < f.size(); ++k)
                 for (const auto& item : split(f[k], ';'))
@@ -299,11 +316,12 @@ std::string read_manifest(const std::string& dir, const std::string& compile_com
             t.test_file = f[3];
             std::vector<std::string> compile;
             const std::string problem = compile_template(
-                compile_commands, {setup.root + "/exercises/" + t.name + ".cpp", setup.root + "/solutions/" + t.name + ".cpp"},
-                compile);
+                compile_commands,
+                {setup.root + "/exercises/" + t.name + ".cpp", setup.root + "/solutions/" + t.name + ".cpp"}, compile);
             if (!problem.empty()) return problem;
             if (t.replay.empty() || t.recorder.empty() || t.wraps.empty())
-                return dir + "/replay.txt has no record and replay for " + t.name + ": build the target `grading` first";
+                return dir + "/replay.txt has no record and replay for " + t.name +
+                       ": build the target `grading` first";
             t.compile = compile;
             setup.topics.push_back(t);
         } else if (f[0] == "exercise" && f.size() > 3 && !setup.topics.empty()) {

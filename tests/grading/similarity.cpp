@@ -39,14 +39,23 @@ struct Token {
 };
 
 bool is_keyword(const std::string& s) {
-    static const std::set<std::string> words = {
-        "alignas", "alignof", "auto", "bool", "break", "case", "catch", "char", "class", "const", "consteval",
-        "constexpr", "constinit", "const_cast", "continue", "decltype", "default", "delete", "do", "double",
-        "dynamic_cast", "else", "enum", "explicit", "extern", "false", "float", "for", "friend", "goto", "if",
-        "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "nullptr", "operator", "private",
-        "protected", "public", "reinterpret_cast", "return", "short", "signed", "sizeof", "static", "static_assert",
-        "static_cast", "struct", "switch", "template", "this", "throw", "true", "try", "typedef", "typename",
-        "union", "unsigned", "using", "virtual", "void", "volatile", "while"};
+    static const std::set<std::string> words = {"alignas",      "alignof",       "auto",        "bool",
+                                                "break",        "case",          "catch",       "char",
+                                                "class",        "const",         "consteval",   "constexpr",
+                                                "constinit",    "const_cast",    "continue",    "decltype",
+                                                "default",      "delete",        "do",          "double",
+                                                "dynamic_cast", "else",          "enum",        "explicit",
+                                                "extern",       "false",         "float",       "for",
+                                                "friend",       "goto",          "if",          "inline",
+                                                "int",          "long",          "mutable",     "namespace",
+                                                "new",          "noexcept",      "nullptr",     "operator",
+                                                "private",      "protected",     "public",      "reinterpret_cast",
+                                                "return",       "short",         "signed",      "sizeof",
+                                                "static",       "static_assert", "static_cast", "struct",
+                                                "switch",       "template",      "this",        "throw",
+                                                "true",         "try",           "typedef",     "typename",
+                                                "union",        "unsigned",      "using",       "virtual",
+                                                "void",         "volatile",      "while"};
     return words.count(s) > 0;
 }
 
@@ -69,7 +78,8 @@ std::size_t skip_blank(const std::string& s, std::size_t i, int& line, bool& lin
         } else if (s.compare(i, 2, "/*") == 0) {
             const std::size_t end = s.find("*/", i + 2);
             const std::size_t stop = end == std::string::npos ? s.size() : end + 2;
-            line += static_cast<int>(std::count(s.begin() + static_cast<long>(i), s.begin() + static_cast<long>(stop), '\n'));
+            line += static_cast<int>(
+                std::count(s.begin() + static_cast<long>(i), s.begin() + static_cast<long>(stop), '\n'));
             i = stop;
         } else {
             break;
@@ -89,8 +99,10 @@ std::size_t literal_end(const std::string& s, std::size_t i) {
     }
     const char quote = s[i];
     for (std::size_t j = i + 1; j < s.size(); ++j) {
-        if (s[j] == '\\') ++j;
-        else if (s[j] == quote || s[j] == '\n') return j + 1;
+        if (s[j] == '\\')
+            ++j;
+        else if (s[j] == quote || s[j] == '\n')
+            return j + 1;
     }
     return s.size();
 }
@@ -99,16 +111,19 @@ std::size_t number_end(const std::string& s, std::size_t i) {
     std::size_t j = i + 1;
     while (j < s.size()) {
         const char c = s[j];
-        if ((c == '+' || c == '-') && std::string("eEpP").find(s[j - 1]) != std::string::npos) ++j;
-        else if (ident_char(c) || c == '.' || (c == '\'' && j + 1 < s.size() && ident_char(s[j + 1]))) ++j;
-        else break;
+        if ((c == '+' || c == '-') && std::string("eEpP").find(s[j - 1]) != std::string::npos)
+            ++j;
+        else if (ident_char(c) || c == '.' || (c == '\'' && j + 1 < s.size() && ident_char(s[j + 1])))
+            ++j;
+        else
+            break;
     }
     return j;
 }
 
 std::size_t punct_length(const std::string& s, std::size_t i) {
     static const char* longer[] = {"<<=", ">>=", "...", "->*", "<=>", "::", "->", "<<", ">>", "<=", ">=", "==", "!=",
-                                   "&&", "||", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", ".*"};
+                                   "&&",  "||",  "++",  "--",  "+=",  "-=", "*=", "/=", "%=", "&=", "|=", "^=", ".*"};
     for (const char* p : longer)
         if (s.compare(i, std::char_traits<char>::length(p), p) == 0) return std::char_traits<char>::length(p);
     return 1;
@@ -130,8 +145,10 @@ std::vector<Token> tokenize(const std::string& s) {
             const bool prefix = end < s.size() && (s[end] == '"' || s[end] == '\'') &&
                                 (word == "u8" || word == "u" || word == "U" || word == "L" || word == "R" ||
                                  word == "u8R" || word == "uR" || word == "UR" || word == "LR");
-            if (prefix) end = literal_end(s, word.back() == 'R' ? end - 1 : end), kind = Kind::text;
-            else kind = is_keyword(word) ? Kind::keyword : Kind::identifier;
+            if (prefix)
+                end = literal_end(s, word.back() == 'R' ? end - 1 : end), kind = Kind::text;
+            else
+                kind = is_keyword(word) ? Kind::keyword : Kind::identifier;
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                    (c == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
             end = number_end(s, i), kind = Kind::number;
@@ -159,8 +176,10 @@ struct Function {
 std::size_t matching_open(const std::vector<Token>& t, std::size_t close) {
     int depth = 0;
     for (std::size_t j = close + 1; j-- > 0;) {
-        if (t[j].text == ")") ++depth;
-        else if (t[j].text == "(" && --depth == 0) return j;
+        if (t[j].text == ")")
+            ++depth;
+        else if (t[j].text == "(" && --depth == 0)
+            return j;
     }
     return std::string::npos;
 }
@@ -173,13 +192,14 @@ char brace_kind(const std::vector<Token>& t, std::size_t i, Function* f) {
     if (j > 0 && (t[j - 1].text == "namespace" || (t[j - 1].kind == Kind::text && j > 1 && t[j - 2].text == "extern")))
         return 'N';
     // Back over what may follow a parameter list: const, noexcept, override, -> Type.
-    static const std::set<std::string> trailing = {"const", "noexcept", "override", "final", "->", "::", "<", ">", "&",
-                                                   "&&", "*", ",", "volatile", "mutable"};
+    static const std::set<std::string> trailing = {
+        "const", "noexcept", "override", "final", "->", "::", "<", ">", "&", "&&", "*", ",", "volatile", "mutable"};
     for (j = i; j > 0; --j) {
         const Token& p = t[j - 1];
         if (p.text == ")") break;
         if (p.kind != Kind::identifier && !trailing.count(p.text) && p.kind != Kind::keyword) return 'O';
-        if (p.text == "struct" || p.text == "class" || p.text == "enum" || p.text == "union" || p.text == "namespace") return 'O';
+        if (p.text == "struct" || p.text == "class" || p.text == "enum" || p.text == "union" || p.text == "namespace")
+            return 'O';
     }
     if (j == 0) return 'O';
     const std::size_t open = matching_open(t, j - 1);
@@ -204,7 +224,8 @@ std::vector<Function> functions(const std::vector<Token>& t) {
             stack.pop_back();
         }
     }
-    found.erase(std::remove_if(found.begin(), found.end(), [](const Function& f) { return f.close == 0; }), found.end());
+    found.erase(std::remove_if(found.begin(), found.end(), [](const Function& f) { return f.close == 0; }),
+                found.end());
     return found;
 }
 
@@ -212,8 +233,8 @@ std::vector<Function> functions(const std::vector<Token>& t) {
 
 // Whether p can end a type: a name, a built-in type, or (with_punct) ">", "&", "*" and "&&".
 bool type_like(const Token& p, bool with_punct) {
-    static const std::set<std::string> builtin = {"auto", "bool", "char", "double", "float", "int", "long", "short",
-                                                  "signed", "unsigned", "void"};
+    static const std::set<std::string> builtin = {"auto", "bool",  "char",   "double",   "float", "int",
+                                                  "long", "short", "signed", "unsigned", "void"};
     static const std::set<std::string> punct = {">", "&", "*", "&&"};
     return p.kind == Kind::identifier || builtin.count(p.text) > 0 || (with_punct && punct.count(p.text) > 0);
 }
@@ -241,7 +262,8 @@ std::set<std::string> declared_names(const std::vector<Token>& t, const std::vec
         // "Vec3 v = ...", "Vec3& v;", and "Vec3 v(...)" (but not "s * hat(u)", which is a call).
         const bool variable = (type_like(p, true) && after.count(n.text)) || (type_like(p, false) && n.text == "(");
         const bool more = p.text == "," && (n.text == "=" || n.text == ";");
-        const bool type = p.text == "struct" || p.text == "class" || p.text == "enum" || (p.text == "using" && n.text == "=");
+        const bool type =
+            p.text == "struct" || p.text == "class" || p.text == "enum" || (p.text == "using" && n.text == "=");
         if ((variable || more || type) && !api.count(t[j].text)) names.insert(t[j].text);
     }
     return names;
@@ -253,10 +275,14 @@ std::set<std::string> declared_names(const std::vector<Token>& t, const std::vec
 std::string normal(const Token& token, const Token* before, const std::set<std::string>& declared) {
     const bool member = before && (before->text == "." || before->text == "->" || before->text == "::");
     switch (token.kind) {
-        case Kind::number: return "0";
-        case Kind::text: return "\"\"";
-        case Kind::identifier: return declared.count(token.text) && !member ? "#" : token.text;
-        default: return token.text;
+        case Kind::number:
+            return "0";
+        case Kind::text:
+            return "\"\"";
+        case Kind::identifier:
+            return declared.count(token.text) && !member ? "#" : token.text;
+        default:
+            return token.text;
     }
 }
 
@@ -292,7 +318,8 @@ std::vector<Print> winnow(const Code& code, const std::set<std::uint64_t>& base)
         std::size_t best = std::string::npos;
         for (std::size_t j = start; j < start + window; ++j)
             if (!base.count(h[j]) && (best == std::string::npos || h[j] <= h[best])) best = j;
-        if (best != std::string::npos && (prints.empty() || prints.back().at != best)) prints.push_back({h[best], best});
+        if (best != std::string::npos && (prints.empty() || prints.back().at != best))
+            prints.push_back({h[best], best});
     }
     return prints;
 }
@@ -448,16 +475,14 @@ std::vector<SimilarityHit> find_similar(const Setup& setup, const std::vector<Cl
     return hits;
 }
 
-
 namespace {
 
 std::string percent(double x) { return std::to_string(static_cast<int>(x * 100 + 0.5)) + "%"; }
 
-std::string match_name(const SimilarityHit& h) {
-    return h.other.empty() ? "solutions/" + h.topic + ".cpp" : h.other;
-}
+std::string match_name(const SimilarityHit& h) { return h.other.empty() ? "solutions/" + h.topic + ".cpp" : h.other; }
 
-bool matches_reference(const std::vector<SimilarityHit>& hits, const std::string& student, const std::string& exercise) {
+bool matches_reference(const std::vector<SimilarityHit>& hits, const std::string& student,
+                       const std::string& exercise) {
     return std::any_of(hits.begin(), hits.end(), [&](const SimilarityHit& h) {
         return h.other.empty() && h.student == student && h.exercise == exercise;
     });
@@ -467,13 +492,17 @@ bool matches_reference(const std::vector<SimilarityHit>& hits, const std::string
 std::string flagged_table(const std::vector<SimilarityHit>& hits) {
     std::map<std::string, std::pair<int, std::map<std::string, int>>> by;
     for (const auto& h : hits) {
-        if (h.other.empty()) ++by[h.student].first;
-        else ++by[h.student].second[h.other], ++by[h.other].second[h.student];
+        if (h.other.empty())
+            ++by[h.student].first;
+        else
+            ++by[h.student].second[h.other], ++by[h.other].second[h.student];
     }
-    std::string out = "| Submission | Exercises that match the reference | Submissions it matches (exercises) |\n|---|---:|---|\n";
+    std::string out =
+        "| Submission | Exercises that match the reference | Submissions it matches (exercises) |\n|---|---:|---|\n";
     for (const auto& [student, row] : by) {
         std::string others;
-        for (const auto& [other, n] : row.second) others += (others.empty() ? "" : ", ") + other + " (" + std::to_string(n) + ")";
+        for (const auto& [other, n] : row.second)
+            others += (others.empty() ? "" : ", ") + other + " (" + std::to_string(n) + ")";
         out += "| " + replace_all(student, "|", "\\|") + " | " + std::to_string(row.first) + " | " +
                replace_all(others, "|", "\\|") + " |\n";
     }
@@ -487,22 +516,27 @@ std::string exercise_section(const Setup& setup, const Topic& topic, const Exerc
     int explained = 0;
     for (const auto& h : hits) {
         if (h.topic != topic.name || h.exercise != e.name) continue;
-        if (!h.other.empty() && matches_reference(hits, h.student, e.name) && matches_reference(hits, h.other, e.name)) {
+        if (!h.other.empty() && matches_reference(hits, h.student, e.name) &&
+            matches_reference(hits, h.other, e.name)) {
             ++explained;  // both are the reference's: the pair says nothing more
             continue;
         }
         rows += "| " + replace_all(h.student, "|", "\\|") + " | " + replace_all(match_name(h), "|", "\\|") + " | " +
                 percent(h.score) + " | " + percent(h.file_score) + " | " + std::to_string(h.shared) + " of " +
-                std::to_string(std::min(h.fingerprints, h.other_fingerprints)) + " | " + h.lines + " | " + h.other_lines + " |\n";
+                std::to_string(std::min(h.fingerprints, h.other_fingerprints)) + " | " + h.lines + " | " +
+                h.other_lines + " |\n";
     }
     if (rows.empty() && explained == 0) return {};
     std::string out = "\n## `" + e.name + "` (" + (c ? "Chapter " + std::to_string(c->number) : topic.chapter) +
                       ", exercises/" + topic.name + ".cpp)\n\n";
     if (!rows.empty())
-        out += "| Submission | Matches | Score | Whole file | Shared fingerprints | Its lines | Their lines |\n"
-               "|---|---|---:|---:|---:|---|---|\n" + rows;
+        out +=
+            "| Submission | Matches | Score | Whole file | Shared fingerprints | Its lines | Their lines |\n"
+            "|---|---|---:|---:|---:|---|---|\n" +
+            rows;
     if (explained)
-        out += "\n" + std::to_string(explained) + " more pairs of submissions match each other because both match the "
+        out += "\n" + std::to_string(explained) +
+               " more pairs of submissions match each other because both match the "
                "reference; they are listed in `similarity.csv`.\n";
     return out;
 }
@@ -511,17 +545,17 @@ std::string exercise_section(const Setup& setup, const Topic& topic, const Exerc
 
 std::string similarity_markdown(const Setup& setup, const std::vector<SimilarityHit>& hits, std::size_t submissions) {
     char method[900];
-    std::snprintf(method, sizeof method,
-                  "Each exercise's code (its function and the helpers it calls) is compared with the reference solution "
-                  "and with every other submission after the names it declares, whitespace, comments and literals are "
-                  "normalised away: winnowed fingerprints of %zu-token k-grams, window %zu, as MOSS computes them; code "
-                  "the stubs already hold is ignored. *Score*: the share of the smaller set of fingerprints found in the "
-                  "other. A pair is listed for an exercise at %s or more (at least %zu fingerprints shared) when the *whole "
-                  "file* matches at %s too, or when the exercise alone scores %s or more and is at least %zu tokens long: "
-                  "a contract leaves few ways to write a short function, so one moderate match alone is no evidence. A "
-                  "listing is a reason to look, not a verdict: it changes no grade.\n",
-                  K, W, percent(kThreshold).c_str(), kMinShared, percent(kThreshold).c_str(), percent(kStrong).c_str(),
-                  kAlone);
+    std::snprintf(
+        method, sizeof method,
+        "Each exercise's code (its function and the helpers it calls) is compared with the reference solution "
+        "and with every other submission after the names it declares, whitespace, comments and literals are "
+        "normalised away: winnowed fingerprints of %zu-token k-grams, window %zu, as MOSS computes them; code "
+        "the stubs already hold is ignored. *Score*: the share of the smaller set of fingerprints found in the "
+        "other. A pair is listed for an exercise at %s or more (at least %zu fingerprints shared) when the *whole "
+        "file* matches at %s too, or when the exercise alone scores %s or more and is at least %zu tokens long: "
+        "a contract leaves few ways to write a short function, so one moderate match alone is no evidence. A "
+        "listing is a reason to look, not a verdict: it changes no grade.\n",
+        K, W, percent(kThreshold).c_str(), kMinShared, percent(kThreshold).c_str(), percent(kStrong).c_str(), kAlone);
     std::string out = "# Similarity\n\n" + std::to_string(submissions) + " submissions compared.\n\n" + method;
     if (hits.empty()) return out + "\nNo submission matches the reference solution or another submission.\n";
     out += "\n## Submissions listed\n\n" + flagged_table(hits);
@@ -534,14 +568,16 @@ std::string similarity_csv(const std::vector<SimilarityHit>& hits) {
     auto field = [](const std::string& s) {
         return s.find_first_of(",\"\n") == std::string::npos ? s : "\"" + replace_all(s, "\"", "\"\"") + "\"";
     };
-    std::string out = "topic,exercise,submission,matches,score,whole_file_score,shared_fingerprints,"
-                      "submission_fingerprints,match_fingerprints,submission_tokens,submission_lines,match_lines\n";
+    std::string out =
+        "topic,exercise,submission,matches,score,whole_file_score,shared_fingerprints,"
+        "submission_fingerprints,match_fingerprints,submission_tokens,submission_lines,match_lines\n";
     for (const auto& h : hits) {
         char scores[64];
         std::snprintf(scores, sizeof scores, "%.2f,%.2f", h.score, h.file_score);
         out += h.topic + "," + h.exercise + "," + field(h.student) + "," + field(match_name(h)) + "," + scores + "," +
-               std::to_string(h.shared) + "," + std::to_string(h.fingerprints) + "," + std::to_string(h.other_fingerprints) +
-               "," + std::to_string(h.tokens) + "," + field(h.lines) + "," + field(h.other_lines) + "\n";
+               std::to_string(h.shared) + "," + std::to_string(h.fingerprints) + "," +
+               std::to_string(h.other_fingerprints) + "," + std::to_string(h.tokens) + "," + field(h.lines) + "," +
+               field(h.other_lines) + "\n";
     }
     return out;
 }

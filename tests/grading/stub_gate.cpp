@@ -14,12 +14,10 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
-
 
 namespace {
 
@@ -72,8 +70,10 @@ int main(int argc, char** argv) {
                 problems.push_back(topic + ": test name uses a doctest filter character: \"" + name + "\"");
             if (!passed) problems.push_back(topic + ": FAILS on solutions/: \"" + name + "\"");
             const auto s = stub.find(name);
-            if (s == stub.end()) problems.push_back(topic + ": did not run on the stubs: \"" + name + "\"");
-            else if (s->second) problems.push_back(topic + ": PASSES on the pristine stubs: \"" + name + "\"");
+            if (s == stub.end())
+                problems.push_back(topic + ": did not run on the stubs: \"" + name + "\"");
+            else if (s->second)
+                problems.push_back(topic + ": PASSES on the pristine stubs: \"" + name + "\"");
         }
         for (const auto& [name, passed] : stub)
             if (!ref.count(name)) problems.push_back(topic + ": ran on the stubs only: \"" + name + "\"");

@@ -51,16 +51,23 @@ Case read_case(const std::string& path, const std::string& name) {
             return starts_with(line, prefix) ? trim(line.substr(prefix.size())) : std::string("\x01");
         };
         std::string v;
-        if ((v = field("case")) != "\x01") c.description = v;
-        else if ((v = field("make")) != "\x01") c.make = v;
-        else if ((v = field("topic")) != "\x01") c.topic = v;
-        else if ((v = field("base")) != "\x01") c.base = v;
-        else if ((v = field("needs")) != "\x01") c.needs_root = v.find("root") != std::string::npos,
-                                                   c.needs_namespaces = v.find("namespaces") != std::string::npos;
-        else if ((v = field("replace")) != "\x01") c.replace.push_back(v);
+        if ((v = field("case")) != "\x01")
+            c.description = v;
+        else if ((v = field("make")) != "\x01")
+            c.make = v;
+        else if ((v = field("topic")) != "\x01")
+            c.topic = v;
+        else if ((v = field("base")) != "\x01")
+            c.base = v;
+        else if ((v = field("needs")) != "\x01")
+            c.needs_root = v.find("root") != std::string::npos,
+            c.needs_namespaces = v.find("namespaces") != std::string::npos;
+        else if ((v = field("replace")) != "\x01")
+            c.replace.push_back(v);
         else if ((v = field("expect")) != "\x01") {
             const auto parts = split(v, '|');
-            c.expects.push_back({trim(parts[0]), parts.size() > 1 ? trim(parts[1]) : "", parts.size() > 2 ? trim(parts[2]) : ""});
+            c.expects.push_back(
+                {trim(parts[0]), parts.size() > 1 ? trim(parts[1]) : "", parts.size() > 2 ? trim(parts[2]) : ""});
         } else if ((v = field("score")) != "\x01") {
             const auto parts = split(v, ' ');
             c.scores[parts[0]] = std::stod(parts.back());
@@ -76,7 +83,8 @@ const Expect* expectation(const Case& c, const TestResult& t) {
     const Expect* best = nullptr;
     std::size_t best_length = 0;
     for (const auto& e : c.expects) {
-        const bool match = e.key == "*" || e.key == t.exercise || (e.key.find(':') != std::string::npos && starts_with(t.name, e.key));
+        const bool match =
+            e.key == "*" || e.key == t.exercise || (e.key.find(':') != std::string::npos && starts_with(t.name, e.key));
         const std::size_t length = e.key == "*" ? 0 : e.key.size();
         if (match && (!best || length > best_length)) best = &e, best_length = length;
     }
@@ -117,7 +125,8 @@ int wait_exit(pid_t pid, double seconds) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     int status = 0;
     while (std::chrono::steady_clock::now() < end) {
-        if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        if (waitpid(pid, &status, WNOHANG) == pid)
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
         usleep(20000);
     }
     return -1;
@@ -153,17 +162,28 @@ struct Args {
 int parse(int argc, char** argv, Args& a) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string o = argv[i], v = argv[i + 1];
-        if (o == "--setup") a.setup_dir = v;
-        else if (o == "--harness") a.harness = v;
-        else if (o == "--cases") a.cases_dir = v;
-        else if (o == "--work") a.work = v;
-        else if (o == "--count") a.count = std::stoi(v);
-        else if (o == "--jobs") a.jobs = std::stoi(v);
-        else if (o == "--timeout") a.timeout = v;
-        else return std::fprintf(stderr, "grading_suite: unknown option %s\n", o.c_str()), 2;
+        if (o == "--setup")
+            a.setup_dir = v;
+        else if (o == "--harness")
+            a.harness = v;
+        else if (o == "--cases")
+            a.cases_dir = v;
+        else if (o == "--work")
+            a.work = v;
+        else if (o == "--count")
+            a.count = std::stoi(v);
+        else if (o == "--jobs")
+            a.jobs = std::stoi(v);
+        else if (o == "--timeout")
+            a.timeout = v;
+        else
+            return std::fprintf(stderr, "grading_suite: unknown option %s\n", o.c_str()), 2;
     }
     if (a.setup_dir.empty() || a.harness.empty() || a.cases_dir.empty() || a.work.empty())
-        return std::fprintf(stderr, "usage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> [--count n]\n"), 2;
+        return std::fprintf(
+                   stderr,
+                   "usage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> [--count n]\n"),
+               2;
     return 0;
 }
 
@@ -205,13 +225,15 @@ std::string write_submission(const Suite& s, const Case& c, const std::string& f
         for (const auto& t : s.setup.topics)
             if (c.make == "reference" || t.name == c.topic)
                 write_file(folder + "/" + t.name + ".cpp",
-                           read_file(c.make == "reference" ? s.setup.root + "/solutions/" + t.name + ".cpp" : pristine_stub(s.setup, t.name)));
+                           read_file(c.make == "reference" ? s.setup.root + "/solutions/" + t.name + ".cpp"
+                                                           : pristine_stub(s.setup, t.name)));
     } else if (c.make == "missing") {
     } else if (c.make == "symlink") {
         if (symlink(reference.c_str(), file.c_str()) != 0) return std::string("symlink: ") + std::strerror(errno);
     } else if (c.make == "oversized") {
         std::string text = read_file(reference) + "\n/*";
-        while (text.size() <= static_cast<std::size_t>(Suite::max_file_kb * 1024)) text += " padding padding padding padding\n";
+        while (text.size() <= static_cast<std::size_t>(Suite::max_file_kb * 1024))
+            text += " padding padding padding padding\n";
         write_file(file, text + "*/\n");
     } else if (!c.make.empty()) {
         return c.name + ": unknown make: " + c.make;
@@ -259,11 +281,12 @@ double first_run(Suite& s) {
     const auto start = std::chrono::steady_clock::now();
     const std::string main_log = work + "/grade.txt", overlap_log = work + "/overlap.txt";
     const pid_t main_run = start_grading(s.run_args, main_log);
-    if (!wait_for(main_log, "Grading ", main_run, 60)) s.problems.push_back("the grading run did not start: " + read_file(main_log));
+    if (!wait_for(main_log, "Grading ", main_run, 60))
+        s.problems.push_back("the grading run did not start: " + read_file(main_log));
     const int overlap = wait_exit(start_grading(s.run_args, overlap_log), 60);
     if (overlap != 2 || read_file(overlap_log).find("another grading run is writing to") == std::string::npos)
-        s.problems.push_back("an overlapping run on the same out folder was not refused (status " + std::to_string(overlap) +
-                             "): " + read_file(overlap_log));
+        s.problems.push_back("an overlapping run on the same out folder was not refused (status " +
+                             std::to_string(overlap) + "): " + read_file(overlap_log));
     const int status = wait_exit(main_run, 3600);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s", read_file(main_log).c_str());
@@ -284,7 +307,8 @@ struct Row {
 // One submission's verdicts, messages and partial scores against its case; its rows.
 void check_submission(Suite& s, const std::string& student, const Case& c, std::vector<Row>& rows) {
     SubmissionResult r;
-    if (!read_results_tsv(s.out + "/results/" + student + ".tsv", r)) return s.problems.push_back(student + ": no results");
+    if (!read_results_tsv(s.out + "/results/" + student + ".tsv", r))
+        return s.problems.push_back(student + ": no results");
     const std::string json = read_file(s.out + "/results/" + student + ".json");
     if (json.find("\"tests\": [") == std::string::npos || json.find("\"score\": ") == std::string::npos)
         s.problems.push_back(student + ": results.json lacks score or tests");
@@ -296,7 +320,9 @@ void check_submission(Suite& s, const std::string& student, const Case& c, std::
         if (t.topic == c.topic)
             if (const Expect* e = expectation(c, t)) want = e->verdict, text = e->text;
         const std::string got = t.not_started ? "not started" : t.verdict;
-        if (got != want) s.problems.push_back(student + ": \"" + t.name + "\": expected " + want + ", got " + got + ": " + t.message);
+        if (got != want)
+            s.problems.push_back(student + ": \"" + t.name + "\": expected " + want + ", got " + got + ": " +
+                                 t.message);
         else if (!text.empty() && t.message.find(text) == std::string::npos)
             s.problems.push_back(student + ": \"" + t.name + "\": the message lacks \"" + text + "\": " + t.message);
         exercise_score[t.exercise] += t.score;
@@ -325,15 +351,20 @@ void check_submission(Suite& s, const std::string& student, const Case& c, std::
 // Resumed: a second run grades nothing and writes the same class files.
 void check_resumed(Suite& s) {
     const std::string csv = read_file(s.out + "/class.csv");
-    if (std::count(csv.begin(), csv.end(), '\n') != s.n + 1) s.problems.push_back("class.csv does not have one row per submission");
-    if (read_file(s.out + "/summary.md").find("| Student | Score |") == std::string::npos) s.problems.push_back("summary.md has no table");
+    if (std::count(csv.begin(), csv.end(), '\n') != s.n + 1)
+        s.problems.push_back("class.csv does not have one row per submission");
+    if (read_file(s.out + "/summary.md").find("| Student | Score |") == std::string::npos)
+        s.problems.push_back("summary.md has no table");
     std::printf("== Running again: every submission already graded\n");
     std::fflush(stdout);
     const std::string before = csv + read_file(s.out + "/summary.md");
     const std::string again = s.a.work + "/again.txt";
-    if (std::system((s.grade + quote(s.out) + s.options + " > " + quote(again)).c_str()) != 0) s.problems.push_back("the resumed run failed");
-    if (read_file(again).find("Graded 0 submissions") == std::string::npos) s.problems.push_back("the resumed run graded again: " + read_file(again));
-    if (read_file(s.out + "/class.csv") + read_file(s.out + "/summary.md") != before) s.problems.push_back("the resumed run changed the class files");
+    if (std::system((s.grade + quote(s.out) + s.options + " > " + quote(again)).c_str()) != 0)
+        s.problems.push_back("the resumed run failed");
+    if (read_file(again).find("Graded 0 submissions") == std::string::npos)
+        s.problems.push_back("the resumed run graded again: " + read_file(again));
+    if (read_file(s.out + "/class.csv") + read_file(s.out + "/summary.md") != before)
+        s.problems.push_back("the resumed run changed the class files");
 }
 
 // Deterministic: a few graded again from scratch give the same bytes.
@@ -346,7 +377,8 @@ void check_deterministic(Suite& s) {
     std::printf("== Grading %s again from scratch\n", only.c_str());
     std::fflush(stdout);
     const std::string out2 = s.a.work + "/out-again";
-    if (std::system((s.grade + quote(out2) + s.options + " --only " + quote(only)).c_str()) != 0) s.problems.push_back("the repeated run failed");
+    if (std::system((s.grade + quote(out2) + s.options + " --only " + quote(only)).c_str()) != 0)
+        s.problems.push_back("the repeated run failed");
     for (const auto& x : subset)
         for (const char* ext : {".json", ".tsv"})
             if (!same_file(s.out + "/results/" + x + ext, out2 + "/results/" + x + ext))
@@ -365,7 +397,8 @@ void check_student_check(Suite& s) {
                      quote(s.subs + "/" + student + "/exercises") + " --out " + quote(check_out) + s.options + " > " +
                      quote(work + "/check.txt"))
                         .c_str());
-        const std::string mine = read_file(check_out + "/results.json"), theirs = read_file(s.out + "/results/" + student + ".json");
+        const std::string mine = read_file(check_out + "/results.json"),
+                          theirs = read_file(s.out + "/results/" + student + ".json");
         const auto from_mine = mine.find("\"tests\": ["), from_theirs = theirs.find("\"tests\": [");
         if (from_mine == std::string::npos || from_theirs == std::string::npos ||
             mine.substr(from_mine) != theirs.substr(from_theirs))
@@ -374,8 +407,10 @@ void check_student_check(Suite& s) {
             s.problems.push_back(student + ": the check printed no progress: " + read_file(work + "/check.txt"));
         // The first failing exercise gets its nudge, Hint 1, and only that (hints.cpp).
         const std::string printed = read_file(work + "/check.txt");
-        if (printed.find("Hint 1 of 3 for geodesic_angle") == std::string::npos || printed.find("Hint 2 of") != std::string::npos)
-            s.problems.push_back(student + ": the check did not print Hint 1 (and only Hint 1) of geodesic_angle: " + printed);
+        if (printed.find("Hint 1 of 3 for geodesic_angle") == std::string::npos ||
+            printed.find("Hint 2 of") != std::string::npos)
+            s.problems.push_back(student +
+                                 ": the check did not print Hint 1 (and only Hint 1) of geodesic_angle: " + printed);
         break;
     }
 }
@@ -395,7 +430,8 @@ void check_interrupted(Suite& s) {
     args.insert(args.end(), {"--only", list});
     std::printf("== SIGTERM to a run grading %s, then the run again\n", list.c_str());
     const pid_t run = start_grading(args, log3);
-    if (!wait_for(log3, "Grading ", run, 60)) s.problems.push_back("the run to interrupt did not start: " + read_file(log3));
+    if (!wait_for(log3, "Grading ", run, 60))
+        s.problems.push_back("the run to interrupt did not start: " + read_file(log3));
     usleep(1500000);  // compiling and testing by now
     kill(run, SIGTERM);
     const int code = wait_exit(run, 10);
@@ -403,8 +439,10 @@ void check_interrupted(Suite& s) {
     if (code != 128 + SIGTERM || read_file(log3).find("Interrupted by SIGTERM") == std::string::npos)
         s.problems.push_back("the interrupted run did not stop as it should (status " + std::to_string(code) + ")");
     usleep(300000);
-    for (const auto& p : processes_mentioning(out3)) s.problems.push_back("left running after the interrupted run: " + p);
-    for (const auto& name : list_dir(out3 + "/.work")) s.problems.push_back("left in .work by the interrupted run: " + name);
+    for (const auto& p : processes_mentioning(out3))
+        s.problems.push_back("left running after the interrupted run: " + p);
+    for (const auto& name : list_dir(out3 + "/.work"))
+        s.problems.push_back("left in .work by the interrupted run: " + name);
     const int again = wait_exit(start_grading(args, log3), 600);
     if (again != 0) s.problems.push_back("the run after the interrupted one failed: " + read_file(log3));
     for (const auto& x : some)
@@ -416,14 +454,18 @@ void check_interrupted(Suite& s) {
 // The table, the time per submission and the verdict of the suite.
 int finish(const Suite& s, const std::vector<Row>& rows, double wall) {
     for (const auto& name : s.skipped)
-        std::printf("== Not run here: the case %s (it needs %s)\n", name.c_str(), s.root ? "the namespaces sandbox" : "root");
-    std::printf("\n| Submission | What it does | Exercise | Expected | Got | Tests | Score |\n|---|---|---|---|---|---:|---:|\n");
+        std::printf("== Not run here: the case %s (it needs %s)\n", name.c_str(),
+                    s.root ? "the namespaces sandbox" : "root");
+    std::printf(
+        "\n| Submission | What it does | Exercise | Expected | Got | Tests | Score "
+        "|\n|---|---|---|---|---|---:|---:|\n");
     for (const auto& row : rows)
         std::printf("| %s | %s | %s | %s | %s | %d | %s / %s |\n", row.student.c_str(), row.description.c_str(),
-                    row.exercise.c_str(), row.expected.c_str(), row.got.c_str(), row.tests, format_number(row.score).c_str(),
-                    format_number(row.max_score).c_str());
-    std::printf("\n%d submissions graded with -j %d in %s s: %s s per submission (%s/first-run.json has each one's time)\n", s.n,
-                s.a.jobs, format_number(wall).c_str(), format_number(wall / s.n).c_str(), s.a.work.c_str());
+                    row.exercise.c_str(), row.expected.c_str(), row.got.c_str(), row.tests,
+                    format_number(row.score).c_str(), format_number(row.max_score).c_str());
+    std::printf(
+        "\n%d submissions graded with -j %d in %s s: %s s per submission (%s/first-run.json has each one's time)\n",
+        s.n, s.a.jobs, format_number(wall).c_str(), format_number(wall / s.n).c_str(), s.a.work.c_str());
     if (!s.problems.empty()) {
         std::printf("\ngrading suite FAILED:\n");
         for (const auto& p : s.problems) std::printf("  %s\n", p.c_str());
@@ -451,8 +493,8 @@ int main(int argc, char** argv) {
     const std::string jobs = std::to_string(s.a.jobs), max_kb = std::to_string(Suite::max_file_kb);
     s.options = " -j " + jobs + " --timeout " + s.a.timeout + " --memory 512 --max-file-size " + max_kb;
     s.grade = quote(s.a.harness) + " grade --setup " + quote(s.a.setup_dir) + " " + quote(s.subs) + " ";
-    s.run_args = {s.a.harness, "grade", "--setup", s.a.setup_dir, s.subs, s.out, "-j", jobs,
-                  "--timeout", s.a.timeout, "--memory", "512", "--max-file-size", max_kb};
+    s.run_args = {s.a.harness, "grade",    "--setup", s.a.setup_dir,     s.subs, s.out, "-j", jobs, "--timeout",
+                  s.a.timeout, "--memory", "512",     "--max-file-size", max_kb};
     const double wall = first_run(s);
     // Every result as first written, to prove below that nothing rewrote one later.
     std::map<std::string, std::string> written;
@@ -465,6 +507,7 @@ int main(int argc, char** argv) {
     check_interrupted(s);
     // Nothing rewrote a result after it was written (a process that outlived its test, say).
     for (const auto& [name, text] : written)
-        if (read_file(s.out + "/results/" + name) != text) s.problems.push_back("results/" + name + " changed after it was written");
+        if (read_file(s.out + "/results/" + name) != text)
+            s.problems.push_back("results/" + name + " changed after it was written");
     return finish(s, rows, wall);
 }

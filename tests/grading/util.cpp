@@ -24,7 +24,8 @@ std::string read_file(const std::string& path, bool* ok) {
 }
 
 bool write_file(const std::string& path, const std::string& text) {
-    const std::string temporary = path + "." + std::to_string(getpid()) + ".partial";  // several runs may share a folder
+    const std::string temporary =
+        path + "." + std::to_string(getpid()) + ".partial";  // several runs may share a folder
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out) return false;

@@ -9,8 +9,8 @@
 // files directly). Writes <out>/results/<student>.json (Gradescope's results.json),
 // <out>/class.csv, <out>/summary.md, <out>/canvas.csv and <out>/moodle.csv (the LMS imports),
 // <out>/similarity.md and .csv (similarity.cpp; the same as the similarity command writes) and
-// <out>/run.json (timings: the only file that changes from run to run). Submissions are graded in parallel, each in its own worker process; a
-// submission whose result is already there for the same inputs is not graded again.
+// <out>/run.json (timings: the only file that changes from run to run). Submissions are graded in parallel, each in its
+// own worker process; a submission whose result is already there for the same inputs is not graded again.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -24,8 +24,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -43,7 +43,8 @@ void on_stop(int sig) { stop_signal = sig; }
 const char* usage =
     "usage:\n"
     "  workbook_grade grade --setup <build>/grading <submissions-folder> <out-folder> [options]\n"
-    "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [--out <folder>] [chapter|topic|exercise] [options]\n"
+    "  workbook_grade check --setup <build>/grading [--folder <exercises-folder>] [--out <folder>] "
+    "[chapter|topic|exercise] [options]\n"
     "  workbook_grade similarity --setup <build>/grading <submissions-folder> <out-folder>\n"
     "  workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>\n"
     "options:\n"
@@ -98,26 +99,46 @@ Args parse(int argc, char** argv) {
             ++i;
             return v;
         };
-        if (o == "--setup") a.setup = take();
-        else if (o == "--topics") a.topics = take();
-        else if (o == "--points") a.points = take();
-        else if (o == "--out") a.out = take();
-        else if (o == "--folder") a.folder = take();
-        else if (o == "-j" || o == "--jobs") a.jobs = static_cast<int>(number(o, take().c_str()));
-        else if (starts_with(o, "-j") && o.size() > 2) a.jobs = static_cast<int>(number("-j", o.c_str() + 2));
-        else if (o == "--timeout") a.options.test_limits.wall_seconds = number(o, take().c_str());
-        else if (o == "--memory") a.options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-        else if (o == "--output-limit") a.options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-        else if (o == "--build-timeout") a.options.build_limits.wall_seconds = number(o, take().c_str());
-        else if (o == "--build-memory") a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-        else if (o == "--max-file-size") a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-        else if (o == "--only") a.only.push_back(take());
-        else if (o == "--assignment") a.assignment = take();
-        else if (o == "--force") a.force = true;
-        else if (o == "--keep-work") a.options.keep_work = true;
-        else if (o == "-h" || o == "--help") std::printf("%s", usage), std::exit(0);
-        else if (starts_with(o, "-") && o.size() > 1) std::fprintf(stderr, "workbook_grade: unknown option %s\n%s", o.c_str(), usage), std::exit(2);
-        else a.positional.push_back(o);
+        if (o == "--setup")
+            a.setup = take();
+        else if (o == "--topics")
+            a.topics = take();
+        else if (o == "--points")
+            a.points = take();
+        else if (o == "--out")
+            a.out = take();
+        else if (o == "--folder")
+            a.folder = take();
+        else if (o == "-j" || o == "--jobs")
+            a.jobs = static_cast<int>(number(o, take().c_str()));
+        else if (starts_with(o, "-j") && o.size() > 2)
+            a.jobs = static_cast<int>(number("-j", o.c_str() + 2));
+        else if (o == "--timeout")
+            a.options.test_limits.wall_seconds = number(o, take().c_str());
+        else if (o == "--memory")
+            a.options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+        else if (o == "--output-limit")
+            a.options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+        else if (o == "--build-timeout")
+            a.options.build_limits.wall_seconds = number(o, take().c_str());
+        else if (o == "--build-memory")
+            a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+        else if (o == "--max-file-size")
+            a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+        else if (o == "--only")
+            a.only.push_back(take());
+        else if (o == "--assignment")
+            a.assignment = take();
+        else if (o == "--force")
+            a.force = true;
+        else if (o == "--keep-work")
+            a.options.keep_work = true;
+        else if (o == "-h" || o == "--help")
+            std::printf("%s", usage), std::exit(0);
+        else if (starts_with(o, "-") && o.size() > 1)
+            std::fprintf(stderr, "workbook_grade: unknown option %s\n%s", o.c_str(), usage), std::exit(2);
+        else
+            a.positional.push_back(o);
     }
     return a;
 }
@@ -136,14 +157,18 @@ std::string load(const Args& a, Setup& setup) {
 
 // The submissions: one folder each. A hidden folder (.git, .DS_Store, an editor's backup) is not
 // a student: it is named in `ignored`, not graded; so is anything that is not a folder.
-void list_students(const std::string& submissions, std::vector<std::string>& students, std::vector<std::string>& ignored) {
+void list_students(const std::string& submissions, std::vector<std::string>& students,
+                   std::vector<std::string>& ignored) {
     for (const auto& name : list_dir(submissions)) {
         const std::string path = submissions + "/" + name;
         struct stat st;
         if (lstat(path.c_str(), &st) != 0) continue;
-        if (starts_with(name, ".")) ignored.push_back(name + ": a hidden name (it starts with '.'), not graded; rename it to grade it");
-        else if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode)) students.push_back(name);
-        else ignored.push_back(name + ": not a folder");
+        if (starts_with(name, "."))
+            ignored.push_back(name + ": a hidden name (it starts with '.'), not graded; rename it to grade it");
+        else if (S_ISDIR(st.st_mode) || S_ISLNK(st.st_mode))
+            students.push_back(name);
+        else
+            ignored.push_back(name + ": not a folder");
     }
 }
 
@@ -162,8 +187,9 @@ std::size_t write_similarity(const Setup& setup, const std::vector<ClassFiles>& 
 }
 
 // The class files: class.csv, summary.md, the LMS imports and the similarity report.
-void write_class_files(const Setup& setup, const Args& a, const std::string& out, const std::vector<SubmissionResult>& results,
-                       const std::vector<ClassFiles>& files, const std::vector<std::string>& ignored) {
+void write_class_files(const Setup& setup, const Args& a, const std::string& out,
+                       const std::vector<SubmissionResult>& results, const std::vector<ClassFiles>& files,
+                       const std::vector<std::string>& ignored) {
     write_file(out + "/class.csv", class_csv(setup, results));
     write_file(out + "/summary.md", class_summary(setup, results, ignored));
     write_file(out + "/canvas.csv", canvas_csv(results, a.assignment));
@@ -176,7 +202,8 @@ void write_class_files(const Setup& setup, const Args& a, const std::string& out
 // ---- similarity ----------------------------------------------------------------------------------
 // The similarity report alone, without grading: workbook_grade similarity --setup <dir> <submissions> <out>.
 int similarity(const Args& a) {
-    if (a.positional.size() != 2) return fail(std::string("similarity needs <submissions-folder> <out-folder>\n") + usage);
+    if (a.positional.size() != 2)
+        return fail(std::string("similarity needs <submissions-folder> <out-folder>\n") + usage);
     Setup setup;
     if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
     const std::string submissions = absolute(a.positional[0]), out = absolute(a.positional[1]);
@@ -187,8 +214,9 @@ int similarity(const Args& a) {
     std::vector<ClassFiles> files;
     for (const auto& s : students) files.push_back({s, collect_files(setup, a.options, submissions + "/" + s)});
     const std::size_t listed = write_similarity(setup, files, out);
-    std::printf("Compared %zu submissions: %zu match the reference or one another on some exercise (%s/similarity.md)\n",
-                files.size(), listed, out.c_str());
+    std::printf(
+        "Compared %zu submissions: %zu match the reference or one another on some exercise (%s/similarity.md)\n",
+        files.size(), listed, out.c_str());
     return 0;
 }
 
@@ -342,15 +370,17 @@ private:
         for (const auto& [pid, slot] : running_) {
             for (int k = 0; k < 200 && waitpid(pid, nullptr, WNOHANG) == 0; ++k) usleep(10000);
             kill(pid, SIGKILL);
-            while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {}
+            while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+            }
             const std::string name = items_[slot.first].name;
             remove_tree(out_ + "/.work/" + name + "." + std::to_string(pid));
             remove_tree(out_ + "/.work/" + name + "." + std::to_string(pid) + ".logs");
         }
         rmdir((out_ + "/.work").c_str());
-        std::printf("Interrupted by %s: %zu submissions stopped, no result written for them; %zu graded before. "
-                    "Run again to grade the rest.\n",
-                    signal_name(stop_signal).c_str(), running_.size(), done_);
+        std::printf(
+            "Interrupted by %s: %zu submissions stopped, no result written for them; %zu graded before. "
+            "Run again to grade the rest.\n",
+            signal_name(stop_signal).c_str(), running_.size(), done_);
         std::fflush(stdout);
         return 128 + stop_signal;
     }
@@ -361,7 +391,8 @@ private:
         if (it == running_.end()) return;
         Item& item = items_[it->second.first];
         item.seconds = std::chrono::duration<double>(Clock::now() - it->second.second).count();
-        item.cpu = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+        item.cpu =
+            usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
         running_.erase(it);
         item.graded = true;
         if (WIFEXITED(status) && WEXITSTATUS(status) == 3) {
@@ -396,7 +427,9 @@ private:
         std::printf("[%*zu/%zu] %-24s %7s / %-5s %s  (%s)\n", width(), ++done_, items_.size(), item.name.c_str(),
                     format_number(item.result.score).c_str(), format_number(item.result.max_score).c_str(),
                     verdicts.c_str(),
-                    item.resumed ? "already graded" : item.ok ? (format_number(item.seconds) + " s").c_str() : "harness error");
+                    item.resumed ? "already graded"
+                    : item.ok    ? (format_number(item.seconds) + " s").c_str()
+                                 : "harness error");
         std::fflush(stdout);
     }
 
@@ -463,7 +496,8 @@ int grade(const Args& a) {
     const std::string submissions = absolute(a.positional[0]);
     const std::string out = absolute(a.positional[1]);
     if (!is_directory(submissions)) return fail(submissions + " is not a folder");
-    if (starts_with(out + "/", submissions + "/")) return fail("the out folder must not be inside the submissions folder");
+    if (starts_with(out + "/", submissions + "/"))
+        return fail("the out folder must not be inside the submissions folder");
     std::vector<std::string> students, ignored;
     list_students(submissions, students, ignored);
     if (const auto problem = select_students(a, submissions, students); !problem.empty()) return fail(problem);
@@ -518,7 +552,8 @@ int check(const Args& a) {
         for (const auto& t : setup.topics) {
             if (t.name == key) selection.topics.insert(t.name), what = "exercises/" + t.name + ".cpp";
             for (const auto& e : t.exercises)
-                if (e.name == key) selection.topics.insert(t.name), selection.exercise = e.name, what = "the exercise " + e.name;
+                if (e.name == key)
+                    selection.topics.insert(t.name), selection.exercise = e.name, what = "the exercise " + e.name;
         }
         if (selection.topics.empty()) {
             std::string known;
@@ -541,7 +576,8 @@ int check(const Args& a) {
     if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0)
         return fail("another check is running in " + dir + "; wait for it to finish");
     const auto files = collect_files(setup, a.options, folder);
-    const SubmissionResult r = grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
+    const SubmissionResult r =
+        grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
     write_file(dir + "/results.json", results_json(setup, r));
     const bool all = print_check(setup, r, relative_to_root(setup, folder));
     for (const auto& n : r.notes)
@@ -578,7 +614,8 @@ int main(int argc, char** argv) {
     }
     const Args a = parse(argc, argv);
     if (command == "manifest") {
-        if (a.topics.empty() || a.points.empty() || a.out.empty()) return fail(std::string("manifest needs --topics, --points and --out\n") + usage);
+        if (a.topics.empty() || a.points.empty() || a.out.empty())
+            return fail(std::string("manifest needs --topics, --points and --out\n") + usage);
         const std::string problem = make_manifest(a.topics, a.points, a.out);
         return problem.empty() ? 0 : fail(problem);
     }

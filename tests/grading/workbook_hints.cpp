@@ -29,7 +29,8 @@ int show(const hints::Hints& h, const std::string& exercise, const std::string& 
     if (!ladder) {
         std::string known;
         for (const auto& l : h.ladders) known += " " + l.exercise;
-        std::fprintf(stderr, "workbook_hints: no hints for '%s'. Exercises with hints:%s\n", exercise.c_str(), known.c_str());
+        std::fprintf(stderr, "workbook_hints: no hints for '%s'. Exercises with hints:%s\n", exercise.c_str(),
+                     known.c_str());
         return 2;
     }
     int level = 0;
@@ -41,8 +42,8 @@ int show(const hints::Hints& h, const std::string& exercise, const std::string& 
         level = 0;
     }
     if (level < 1 || level > static_cast<int>(ladder->levels.size())) {
-        std::fprintf(stderr, "workbook_hints: --hint takes a level from 1 to %zu for %s, not '%s'\n", ladder->levels.size(),
-                     exercise.c_str(), level_text.c_str());
+        std::fprintf(stderr, "workbook_hints: --hint takes a level from 1 to %zu for %s, not '%s'\n",
+                     ladder->levels.size(), exercise.c_str(), level_text.c_str());
         return 2;
     }
     std::printf("%s", hints::for_terminal(*ladder, level).c_str());
@@ -64,7 +65,8 @@ int lint(const hints::Hints& h, const std::string& file, const std::string& mani
             if (!(f >> kind >> topic >> name) || kind != "exercise") continue;
             ++graded;
             if (!hints::find(h, name))
-                std::printf("%s: no hints for the graded exercise %s (topic %s)\n", file.c_str(), name.c_str(), topic.c_str()),
+                std::printf("%s: no hints for the graded exercise %s (topic %s)\n", file.c_str(), name.c_str(),
+                            topic.c_str()),
                     ++problems;
         }
         std::printf("%d graded exercises in %s\n", graded, manifest.c_str());
@@ -85,7 +87,8 @@ int main(int argc, char** argv) {
         return lint(h, file, argc == 5 ? argv[4] : "");
     if (command == "text" && argc == 3) {
         for (const auto& l : h.ladders)
-            for (std::size_t k = 1; k <= l.levels.size(); ++k) std::printf("%s", hints::for_terminal(l, static_cast<int>(k)).c_str());
+            for (std::size_t k = 1; k <= l.levels.size(); ++k)
+                std::printf("%s", hints::for_terminal(l, static_cast<int>(k)).c_str());
         return 0;
     }
     return usage();

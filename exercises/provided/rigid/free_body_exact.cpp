@@ -111,18 +111,24 @@ FreeBodyMotion free_body_motion(const Vec3& I, const Vec3& Omega0) {
     // M^2 - 2 E I_mid: the distance from the separatrix, the one difference that cannot be avoided.
     const LD delta = Il(lo) * (Il(lo) - Il(mid)) * w(lo) + Il(hi) * (Il(hi) - Il(mid)) * w(hi);
     int p, s;
-    if (I(mid) == I(hi)) p = hi, s = lo;        // prolate symmetric: circulation about the odd axis
-    else if (I(mid) == I(lo)) p = lo, s = hi;   // oblate symmetric
-    else if (delta >= 0) p = lo, s = hi;        // about the largest axis (and the separatrix)
-    else p = hi, s = lo;                        // about the smallest axis
+    if (I(mid) == I(hi))
+        p = hi, s = lo;  // prolate symmetric: circulation about the odd axis
+    else if (I(mid) == I(lo))
+        p = lo, s = hi;  // oblate symmetric
+    else if (delta >= 0)
+        p = lo, s = hi;  // about the largest axis (and the separatrix)
+    else
+        p = hi, s = lo;  // about the smallest axis
     const int q = mid;
     mo.p = p, mo.q = q, mo.s = s;
     if (Omega0(p) == 0 && Omega0(s) == 0) return steady();  // along the middle axis
 
     const LD dsp = std::fabs(Il(s) - Il(p)), dsq = std::fabs(Il(s) - Il(q)), dqp = std::fabs(Il(q) - Il(p));
-    const LD P1 = std::fabs(Il(p) * (Il(s) - Il(p)) * w(p)) + std::fabs(Il(q) * (Il(s) - Il(q)) * w(q));  // |2E I_s - M^2|
-    const LD P2 = std::fabs(Il(q) * (Il(q) - Il(p)) * w(q)) + std::fabs(Il(s) * (Il(s) - Il(p)) * w(s));  // |M^2 - 2E I_p|
-    const LD P3 = std::fabs(delta);                                                                       // |M^2 - 2E I_q|
+    const LD P1 =
+        std::fabs(Il(p) * (Il(s) - Il(p)) * w(p)) + std::fabs(Il(q) * (Il(s) - Il(q)) * w(q));  // |2E I_s - M^2|
+    const LD P2 =
+        std::fabs(Il(q) * (Il(q) - Il(p)) * w(q)) + std::fabs(Il(s) * (Il(s) - Il(p)) * w(s));  // |M^2 - 2E I_p|
+    const LD P3 = std::fabs(delta);                                                             // |M^2 - 2E I_q|
     if (P2 == 0) return steady();  // along the p axis, or in the plane of two equal moments
 
     const LD Ap = std::sqrt(P1 / (Il(p) * dsp)), Aq = std::sqrt(P1 / (Il(q) * dsq)), As = std::sqrt(P2 / (Il(s) * dsp));

@@ -44,14 +44,14 @@ JacobiElliptic jacobi_elliptic(double u, double m, double m_c);
 // The constants of one free motion, fixed by I and Omega0 (see the conventions above).
 struct FreeBodyMotion {
     Vec3 I, Omega0;
-    bool steady = false;         // Omega constant
-    int p = 0, q = 1, s = 2;     // axes carrying cn, sn and dn
+    bool steady = false;            // Omega constant
+    int p = 0, q = 1, s = 2;        // axes carrying cn, sn and dn
     Vec3 amplitude = Vec3::Zero();  // signed A_p, A_q, A_s, stored at indices p, q, s
-    double lambda = 0, u0 = 0;   // u = u0 + lambda t
-    double m = 0, m_c = 1;       // elliptic parameter and its complement (m + m_c = 1)
-    double energy = 0;           // E = 1/2 Omega.I Omega
-    double momentum_squared = 0; // M^2 = |I Omega|^2
-    double period = 0;           // of Omega(t): 4 K(m) / lambda; +infinity on the separatrix, 0 if steady
+    double lambda = 0, u0 = 0;      // u = u0 + lambda t
+    double m = 0, m_c = 1;          // elliptic parameter and its complement (m + m_c = 1)
+    double energy = 0;              // E = 1/2 Omega.I Omega
+    double momentum_squared = 0;    // M^2 = |I Omega|^2
+    double period = 0;              // of Omega(t): 4 K(m) / lambda; +infinity on the separatrix, 0 if steady
 };
 
 // snippet: free_body_exact

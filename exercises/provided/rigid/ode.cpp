@@ -23,11 +23,11 @@ struct Method {
 };
 
 const Method methods[] = {
-    {"rk2", &gsl_odeiv2_step_rk2, false},       {"rk4", &gsl_odeiv2_step_rk4, false},
-    {"rkf45", &gsl_odeiv2_step_rkf45, false},   {"rkck", &gsl_odeiv2_step_rkck, false},
-    {"rk8pd", &gsl_odeiv2_step_rk8pd, false},   {"msadams", &gsl_odeiv2_step_msadams, false},
-    {"rk1imp", &gsl_odeiv2_step_rk1imp, true},  {"rk2imp", &gsl_odeiv2_step_rk2imp, true},
-    {"rk4imp", &gsl_odeiv2_step_rk4imp, true},  {"bsimp", &gsl_odeiv2_step_bsimp, true},
+    {"rk2", &gsl_odeiv2_step_rk2, false},      {"rk4", &gsl_odeiv2_step_rk4, false},
+    {"rkf45", &gsl_odeiv2_step_rkf45, false},  {"rkck", &gsl_odeiv2_step_rkck, false},
+    {"rk8pd", &gsl_odeiv2_step_rk8pd, false},  {"msadams", &gsl_odeiv2_step_msadams, false},
+    {"rk1imp", &gsl_odeiv2_step_rk1imp, true}, {"rk2imp", &gsl_odeiv2_step_rk2imp, true},
+    {"rk4imp", &gsl_odeiv2_step_rk4imp, true}, {"bsimp", &gsl_odeiv2_step_bsimp, true},
     {"msbdf", &gsl_odeiv2_step_msbdf, true},
 };
 
@@ -42,7 +42,7 @@ const Method& find_method(const std::string& name) {
 // What GSL calls back: the user's functions, and the first exception they threw. C frames
 // must not be unwound through, so callbacks catch, park the exception, and report failure.
 struct Context {
-    const OdeRhs* f;            // one of the two right-hand sides
+    const OdeRhs* f;  // one of the two right-hand sides
     const OdeRhsInPlace* fast;
     const OdeJacobian& jacobian;
     std::size_t n;
@@ -59,8 +59,8 @@ int rhs(double t, const double y[], double dydt[], void* params) {
         } else {
             const VecX dy = (*c.f)(t, Eigen::Map<const VecX>(y, static_cast<Eigen::Index>(c.n)));
             if (static_cast<std::size_t>(dy.size()) != c.n)
-                throw std::logic_error("the right-hand side returned " + std::to_string(dy.size()) + " numbers for a state of " +
-                                       std::to_string(c.n));
+                throw std::logic_error("the right-hand side returned " + std::to_string(dy.size()) +
+                                       " numbers for a state of " + std::to_string(c.n));
             Eigen::Map<VecX>(dydt, static_cast<Eigen::Index>(c.n)) = dy;
         }
         return GSL_SUCCESS;
@@ -134,8 +134,8 @@ double time_gsl_calls(const OdeRhsInPlace& f, const VecX& y, long calls, VecX* l
 
 namespace {
 
-void check_arguments(const Method& method, const VecX& y0, const std::vector<double>& times, const OdeSettings& settings,
-                     const OdeJacobian& jacobian) {
+void check_arguments(const Method& method, const VecX& y0, const std::vector<double>& times,
+                     const OdeSettings& settings, const OdeJacobian& jacobian) {
     if (method.needs_jacobian && !jacobian)
         throw std::invalid_argument("method '" + settings.method + "' is implicit and needs the Jacobian df/dy");
     if (!(settings.rel_tol >= 0) || !(settings.abs_tol >= 0) || !std::isfinite(settings.rel_tol) ||
@@ -146,26 +146,31 @@ void check_arguments(const Method& method, const VecX& y0, const std::vector<dou
     if (times.empty()) throw std::invalid_argument("no output times");
     for (std::size_t i = 0; i < times.size(); ++i) {
         if (!std::isfinite(times[i])) throw std::invalid_argument("output times must be finite");
-        if (i > 0 && !(times[i] > times[i - 1])) throw std::invalid_argument("output times must be strictly increasing");
+        if (i > 0 && !(times[i] > times[i - 1]))
+            throw std::invalid_argument("output times must be strictly increasing");
     }
-    if (y0.size() == 0 || !y0.allFinite()) throw std::invalid_argument("the initial state must be non-empty and finite");
+    if (y0.size() == 0 || !y0.allFinite())
+        throw std::invalid_argument("the initial state must be non-empty and finite");
     if (settings.compensated_time && (method.needs_jacobian || settings.method == "msadams"))
-        throw std::invalid_argument("compensated_time needs an explicit Runge-Kutta method (rk2, rk4, rkf45, rkck, rk8pd), not '" +
-                                    settings.method + "'");
+        throw std::invalid_argument(
+            "compensated_time needs an explicit Runge-Kutta method (rk2, rk4, rkf45, rkck, rk8pd), not '" +
+            settings.method + "'");
 }
 
 [[noreturn]] void solver_failed(const OdeSettings& settings, double t, int status) {
-    throw std::runtime_error("GSL " + settings.method + " failed at t = " + std::to_string(t) + ": " + gsl_strerror(status));
+    throw std::runtime_error("GSL " + settings.method + " failed at t = " + std::to_string(t) + ": " +
+                             gsl_strerror(status));
 }
 
 // GSL's own driver: gsl_odeiv2_driver_apply to each output time.
-void drive_with_gsl(Context& c, gsl_odeiv2_system& system, const Method& method, VecX& y, const std::vector<double>& times,
-                    const OdeObserver& observe, const OdeSettings& settings) {
+void drive_with_gsl(Context& c, gsl_odeiv2_system& system, const Method& method, VecX& y,
+                    const std::vector<double>& times, const OdeObserver& observe, const OdeSettings& settings) {
     std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
         gsl_odeiv2_driver_alloc_y_new(&system, *method.type, settings.first_step, settings.abs_tol, settings.rel_tol),
         gsl_odeiv2_driver_free);
     if (!driver) throw std::runtime_error("GSL could not allocate the '" + settings.method + "' driver");
-    if (settings.max_steps > 0) gsl_odeiv2_driver_set_nmax(driver.get(), static_cast<unsigned long>(settings.max_steps));
+    if (settings.max_steps > 0)
+        gsl_odeiv2_driver_set_nmax(driver.get(), static_cast<unsigned long>(settings.max_steps));
     double t = times.front();
     for (std::size_t i = 1; i < times.size(); ++i) {
         const int status = gsl_odeiv2_driver_apply(driver.get(), &t, times[i], y.data());
@@ -185,7 +190,7 @@ void drive_compensated(Context& c, gsl_odeiv2_system& system, const Method& meth
                        const std::vector<double>& times, const OdeObserver& observe, const OdeSettings& settings) {
     const std::size_t n = c.n;
     std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)> step(gsl_odeiv2_step_alloc(*method.type, n),
-                                                                            gsl_odeiv2_step_free);
+                                                                           gsl_odeiv2_step_free);
     std::unique_ptr<gsl_odeiv2_control, decltype(&gsl_odeiv2_control_free)> control(
         gsl_odeiv2_control_y_new(settings.abs_tol, settings.rel_tol), gsl_odeiv2_control_free);
     if (!step || !control) throw std::runtime_error("GSL could not allocate the '" + settings.method + "' stepper");
@@ -201,23 +206,26 @@ void drive_compensated(Context& c, gsl_odeiv2_system& system, const Method& meth
             if (!(left > 0)) break;
             if (settings.max_steps > 0 && steps >= settings.max_steps) solver_failed(settings, t_hi, GSL_EMAXITER);
             if (use_dydt_in) {
-                if (count == 0 && rhs(t_hi, y.data(), dydt_in.data(), &c) != GSL_SUCCESS) std::rethrow_exception(c.error);
+                if (count == 0 && rhs(t_hi, y.data(), dydt_in.data(), &c) != GSL_SUCCESS)
+                    std::rethrow_exception(c.error);
                 if (count > 0) dydt_in = dydt_out;
             }
             std::copy(y.data(), y.data() + n, y_before.begin());
             for (double h_try = h;;) {
                 const bool final = h_try >= left;
                 if (final) h_try = left;
-                const int status = gsl_odeiv2_step_apply(step.get(), t_hi, h_try, y.data(), yerr.data(),
-                                                         use_dydt_in ? dydt_in.data() : nullptr, dydt_out.data(), &system);
+                const int status =
+                    gsl_odeiv2_step_apply(step.get(), t_hi, h_try, y.data(), yerr.data(),
+                                          use_dydt_in ? dydt_in.data() : nullptr, dydt_out.data(), &system);
                 if (c.error) std::rethrow_exception(c.error);
                 if (status != GSL_SUCCESS) solver_failed(settings, t_hi, status);
                 // As gsl_odeiv2_evolve_apply: the control may shrink the step and ask for a retry.
                 double h_new = h_try;
                 const double t_next = t_hi + h_try;
-                if (gsl_odeiv2_control_hadjust(control.get(), step.get(), y.data(), yerr.data(), dydt_out.data(), &h_new) ==
-                    GSL_ODEIV_HADJ_DEC) {
-                    if (!(std::abs(h_new) < std::abs(h_try) && t_next + h_new != t_next)) solver_failed(settings, t_hi, GSL_FAILURE);
+                if (gsl_odeiv2_control_hadjust(control.get(), step.get(), y.data(), yerr.data(), dydt_out.data(),
+                                               &h_new) == GSL_ODEIV_HADJ_DEC) {
+                    if (!(std::abs(h_new) < std::abs(h_try) && t_next + h_new != t_next))
+                        solver_failed(settings, t_hi, GSL_FAILURE);
                     std::copy(y_before.begin(), y_before.end(), y.data());
                     h_try = h_new;
                     continue;
@@ -247,8 +255,10 @@ OdeStats integrate(Context& c, const VecX& y0, const std::vector<double>& times,
     gsl_odeiv2_system system{rhs, method.needs_jacobian ? jac : nullptr, c.n, &c};
     VecX y = y0;
     observe(times.front(), y);
-    if (settings.compensated_time) drive_compensated(c, system, method, y, times, observe, settings);
-    else drive_with_gsl(c, system, method, y, times, observe, settings);
+    if (settings.compensated_time)
+        drive_compensated(c, system, method, y, times, observe, settings);
+    else
+        drive_with_gsl(c, system, method, y, times, observe, settings);
     return c.stats;
 }
 
@@ -260,8 +270,8 @@ OdeStats integrate_gsl(const OdeRhs& f, const VecX& y0, const std::vector<double
     return integrate(c, y0, times, observe, settings);
 }
 
-OdeStats integrate_gsl(const OdeRhsInPlace& f, const VecX& y0, const std::vector<double>& times, const OdeObserver& observe,
-                       const OdeSettings& settings, const OdeJacobian& jacobian) {
+OdeStats integrate_gsl(const OdeRhsInPlace& f, const VecX& y0, const std::vector<double>& times,
+                       const OdeObserver& observe, const OdeSettings& settings, const OdeJacobian& jacobian) {
     Context c{nullptr, &f, jacobian, static_cast<std::size_t>(y0.size()), {}, nullptr};
     return integrate(c, y0, times, observe, settings);
 }
@@ -282,7 +292,8 @@ VecX pack(const BodyState& s) {
 }
 
 BodyState unpack(const VecX& y) {
-    if (y.size() != 12) throw std::invalid_argument("a rigid-body state has 12 numbers, got " + std::to_string(y.size()));
+    if (y.size() != 12)
+        throw std::invalid_argument("a rigid-body state has 12 numbers, got " + std::to_string(y.size()));
     BodyState s;
     s.Omega = y.head<3>();
     for (int i = 0; i < 3; ++i) s.R.row(i) = y.segment<3>(3 + 3 * i).transpose();

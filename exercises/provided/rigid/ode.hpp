@@ -23,7 +23,7 @@ namespace rigid {
 using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
 
-using OdeRhs = std::function<VecX(double t, const VecX& y)>;       // f(t, y)
+using OdeRhs = std::function<VecX(double t, const VecX& y)>;  // f(t, y)
 // The same in place, as GSL itself calls a right-hand side: dydt = f(t, y) written into dydt,
 // y and dydt of the state's size, no allocation (Chapter 7 measures what that saves).
 using OdeRhsInPlace = std::function<void(double t, const double* y, double* dydt)>;
@@ -58,13 +58,11 @@ bool gsl_method_needs_jacobian(const std::string& method);
 // a non-finite y0, or an implicit method without a Jacobian; std::runtime_error when the
 // solver fails (its GSL status and the time reached are in the message). An exception
 // thrown by f (say, a stub's not_implemented) reaches the caller unchanged.
-OdeStats integrate_gsl(const OdeRhs& f, const VecX& y0, const std::vector<double>& times,
-                       const OdeObserver& observe, const OdeSettings& settings = {},
-                       const OdeJacobian& jacobian = {});
+OdeStats integrate_gsl(const OdeRhs& f, const VecX& y0, const std::vector<double>& times, const OdeObserver& observe,
+                       const OdeSettings& settings = {}, const OdeJacobian& jacobian = {});
 // The same with a right-hand side in place.
 OdeStats integrate_gsl(const OdeRhsInPlace& f, const VecX& y0, const std::vector<double>& times,
-                       const OdeObserver& observe, const OdeSettings& settings = {},
-                       const OdeJacobian& jacobian = {});
+                       const OdeObserver& observe, const OdeSettings& settings = {}, const OdeJacobian& jacobian = {});
 
 // The run time, in seconds, of `calls` evaluations of f at states near y, each made through
 // the very function that integrate_gsl hands GSL (for an OdeRhs: the call, a new VecX, a copy
@@ -80,7 +78,7 @@ struct BodyState {
     Vec3 Omega;
     Mat3 R;
 };
-VecX pack(const BodyState& s);          // 12 numbers: Omega, then R row by row
-BodyState unpack(const VecX& y);        // throws std::invalid_argument unless y.size() == 12
+VecX pack(const BodyState& s);    // 12 numbers: Omega, then R row by row
+BodyState unpack(const VecX& y);  // throws std::invalid_argument unless y.size() == 12
 
 }  // namespace rigid

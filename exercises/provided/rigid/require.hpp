@@ -40,11 +40,9 @@ inline void require_positive(double x, const std::string& name) {
 
 // a must be finite and non-zero; returns a / |a| (stableNorm: no overflow or underflow).
 inline Vec3 require_axis(const Vec3& a, const std::string& name) {
-    if (!a.allFinite())
-        throw std::invalid_argument(name + " must be a finite vector, got " + describe(a));
+    if (!a.allFinite()) throw std::invalid_argument(name + " must be a finite vector, got " + describe(a));
     const double n = a.stableNorm();
-    if (!(n > 0))
-        throw std::invalid_argument(name + " must be a non-zero vector, got " + describe(a));
+    if (!(n > 0)) throw std::invalid_argument(name + " must be a non-zero vector, got " + describe(a));
     return a / n;
 }
 
@@ -67,8 +65,8 @@ inline void require_principal_moments(const Vec3& I, const std::string& name = "
         if (I(k) > (I(i) + I(j)) * (1 + 8 * 2.220446049250313e-16)) {
             std::ostringstream s;
             s.precision(17);
-            s << name << " " << describe(I) << " break the triangle inequality: I" << i + 1 << " + I" << j + 1
-              << " = " << I(i) + I(j) << " < I" << k + 1 << " = " << I(k)
+            s << name << " " << describe(I) << " break the triangle inequality: I" << i + 1 << " + I" << j + 1 << " = "
+              << I(i) + I(j) << " < I" << k + 1 << " = " << I(k)
               << " (each moment must be at most the sum of the other two)";
             throw std::invalid_argument(s.str());
         }

@@ -29,7 +29,8 @@ long integrate_steps(const IncrementStepper& step, const BodyState& s0, const st
     if (times.empty()) throw std::invalid_argument("no output times");
     for (std::size_t i = 0; i < times.size(); ++i) {
         require_finite(times[i], "output time");
-        if (i > 0 && !(times[i] > times[i - 1])) throw std::invalid_argument("output times must be strictly increasing");
+        if (i > 0 && !(times[i] > times[i - 1]))
+            throw std::invalid_argument("output times must be strictly increasing");
     }
     if (!s0.Omega.allFinite() || !s0.R.allFinite()) throw std::invalid_argument("the initial state must be finite");
 

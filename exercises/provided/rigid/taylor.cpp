@@ -40,11 +40,13 @@ template <class Real>
 long integrate_taylor(const HeavyTop& top, const BodyState& s0, const std::vector<double>& times,
                       const std::function<void(double, const TaylorState<Real>&)>& observe, double h, int order) {
     require_positive(h, "step h");
-    if (order < 1 || order > 60) throw std::invalid_argument("order must be between 1 and 60, got " + std::to_string(order));
+    if (order < 1 || order > 60)
+        throw std::invalid_argument("order must be between 1 and 60, got " + std::to_string(order));
     if (times.empty()) throw std::invalid_argument("no output times");
     for (std::size_t i = 0; i < times.size(); ++i) {
         require_finite(times[i], "output time");
-        if (i > 0 && !(times[i] > times[i - 1])) throw std::invalid_argument("output times must be strictly increasing");
+        if (i > 0 && !(times[i] > times[i - 1]))
+            throw std::invalid_argument("output times must be strictly increasing");
     }
     if (!s0.Omega.allFinite() || !s0.R.allFinite()) throw std::invalid_argument("the initial state must be finite");
 
@@ -102,7 +104,7 @@ long integrate_taylor(const HeavyTop& top, const BodyState& s0, const std::vecto
 template long integrate_taylor<double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
                                        const std::function<void(double, const TaylorState<double>&)>&, double, int);
 template long integrate_taylor<long double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
-                                            const std::function<void(double, const TaylorState<long double>&)>&,
-                                            double, int);
+                                            const std::function<void(double, const TaylorState<long double>&)>&, double,
+                                            int);
 
 }  // namespace rigid

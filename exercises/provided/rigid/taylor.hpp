@@ -43,15 +43,14 @@ BodyState to_double(const TaylorState<Real>& s) {
 // integrate_rk4) or a non-finite state.
 template <class Real>
 long integrate_taylor(const HeavyTop& top, const BodyState& s0, const std::vector<double>& times,
-                      const std::function<void(double t, const TaylorState<Real>& s)>& observe, double h,
-                      int order);
+                      const std::function<void(double t, const TaylorState<Real>& s)>& observe, double h, int order);
 // end snippet
 
 extern template long integrate_taylor<double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
-                                              const std::function<void(double, const TaylorState<double>&)>&,
-                                              double, int);
-extern template long integrate_taylor<long double>(
-    const HeavyTop&, const BodyState&, const std::vector<double>&,
-    const std::function<void(double, const TaylorState<long double>&)>&, double, int);
+                                              const std::function<void(double, const TaylorState<double>&)>&, double,
+                                              int);
+extern template long integrate_taylor<long double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
+                                                   const std::function<void(double, const TaylorState<long double>&)>&,
+                                                   double, int);
 
 }  // namespace rigid

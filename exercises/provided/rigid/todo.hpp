@@ -11,8 +11,8 @@ namespace rigid {
 
 struct not_implemented : std::logic_error {
     explicit not_implemented(const std::string& function)
-        : std::logic_error("not implemented yet: " + function +
-                           " (see exercises/hints.md, section '" + function + "')"),
+        : std::logic_error("not implemented yet: " + function + " (see exercises/hints.md, section '" + function +
+                           "')"),
           function_name(function) {}
     std::string function_name;
 };

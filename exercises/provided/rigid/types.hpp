@@ -8,7 +8,7 @@
 
 namespace rigid {
 
-using Vec3 = Eigen::Vector3d;   // a 3-vector: lab or body coordinates, as each function says
-using Mat3 = Eigen::Matrix3d;   // a 3x3 matrix: rotation R, inertia J, skew hat(w), ...
+using Vec3 = Eigen::Vector3d;  // a 3-vector: lab or body coordinates, as each function says
+using Mat3 = Eigen::Matrix3d;  // a 3x3 matrix: rotation R, inertia J, skew hat(w), ...
 
 }  // namespace rigid

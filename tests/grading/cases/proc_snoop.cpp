@@ -1,9 +1,8 @@
-// case: looks for the harness's files, the reference solutions and binaries, other students' work and the harness's processes; answers right only if it finds none of them
-// needs: namespaces
-// replace: hat
-// expect: * | pass
+// case: looks for the harness's files, the reference solutions and binaries, other students' work and the harness's
+// processes; answers right only if it finds none of them needs: namespaces replace: hat expect: * | pass
 #include <dirent.h>
 #include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -12,10 +11,10 @@ namespace {
 bool readable(const std::string& path) { return std::ifstream(path).good(); }
 int visible() {
     int found = 0;
-    for (const char* path : {"@ROOT@/solutions/rotation.cpp", "@ROOT@/tests/rotation_test.cpp", "@BUILD@/graders/grade_rotation",
-                             "@BUILD@/grading/replay/replay_rotation", "@BUILD@/grading/manifest.txt",
-                             "@OUT@/results/reference.json", "@OUT@/../submissions/reference/exercises/rotation.cpp",
-                             "/etc/passwd", "/root", "/tmp"})
+    for (const char* path :
+         {"@ROOT@/solutions/rotation.cpp", "@ROOT@/tests/rotation_test.cpp", "@BUILD@/graders/grade_rotation",
+          "@BUILD@/grading/replay/replay_rotation", "@BUILD@/grading/manifest.txt", "@OUT@/results/reference.json",
+          "@OUT@/../submissions/reference/exercises/rotation.cpp", "/etc/passwd", "/root", "/tmp"})
         found += readable(path) || access(path, F_OK) == 0;
     // Only the sandbox's own processes: its init and this test.
     if (DIR* d = opendir("/proc")) {

@@ -1,12 +1,11 @@
 // The recorder's buffer and the end-of-test marker (see record.hpp).
 #include "record.hpp"
 
+#include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <new>
-
-#include <doctest/doctest.h>
 
 #include "listener.hpp"
 #include "rigid/todo.hpp"

@@ -100,8 +100,10 @@ using stored_t = std::conditional_t<is_function<std::decay_t<P>>::value, std::de
 
 template <class P>
 stored_t<P> pass(P arg, std::uint32_t& slot) {
-    if constexpr (is_function<std::decay_t<P>>::value) return recording_callback(slot++, arg);
-    else return static_cast<P>(arg);
+    if constexpr (is_function<std::decay_t<P>>::value)
+        return recording_callback(slot++, arg);
+    else
+        return static_cast<P>(arg);
 }
 
 template <class R, class... P>

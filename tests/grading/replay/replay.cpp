@@ -2,12 +2,12 @@
 // test case), the position in it, and the first problem found (see replay.hpp).
 #include "replay.hpp"
 
+#include <doctest/doctest.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <new>
 #include <sstream>
-
-#include <doctest/doctest.h>
 
 #include "listener.hpp"
 #include "rigid/todo.hpp"
@@ -45,7 +45,8 @@ void load() {
     buffer << in.rdbuf();
     s.data = buffer.str();
     const std::string m = magic;
-    if (s.data.size() > max_record) s.problem = "the record is larger than " + std::to_string(max_record >> 20) + " MiB";
+    if (s.data.size() > max_record)
+        s.problem = "the record is larger than " + std::to_string(max_record >> 20) + " MiB";
     else if (s.data.compare(0, m.size(), m) != 0)
         s.problem = "the submission's process left no record (it ended before the test began, or wrote over it)";
     s.at = m.size();
@@ -96,8 +97,9 @@ void expect_head(Tag tag, std::uint32_t id, std::uint64_t hash, const std::strin
     ++s.calls;
     const int got = next_tag();
     if (got < 0)
-        fail(what + ": the record ends before this call (the submission's process ended there: exit, a crash or "
-                    "the time limit)");
+        fail(what +
+             ": the record ends before this call (the submission's process ended there: exit, a crash or "
+             "the time limit)");
     if (got != tag) fail(what + ": the record has another event here; the grader and the record disagree");
     std::uint32_t recorded_id = 0;
     std::uint64_t recorded_hash = 0;
@@ -129,19 +131,32 @@ void throw_recorded() {
         fail(std::string("a recorded exception is malformed: ") + e.what());
     }
     switch (kind) {
-        case k_not_implemented: throw rigid::not_implemented(extra);
-        case k_invalid_argument: throw std::invalid_argument(what);
-        case k_domain_error: throw std::domain_error(what);
-        case k_length_error: throw std::length_error(what);
-        case k_out_of_range: throw std::out_of_range(what);
-        case k_logic_error: throw std::logic_error(what);
-        case k_range_error: throw std::range_error(what);
-        case k_overflow_error: throw std::overflow_error(what);
-        case k_underflow_error: throw std::underflow_error(what);
-        case k_runtime_error: throw std::runtime_error(what);
-        case k_bad_alloc: throw std::bad_alloc();
-        case k_exception: throw replayed_exception(what);
-        case k_unknown: throw unknown_exception{};
+        case k_not_implemented:
+            throw rigid::not_implemented(extra);
+        case k_invalid_argument:
+            throw std::invalid_argument(what);
+        case k_domain_error:
+            throw std::domain_error(what);
+        case k_length_error:
+            throw std::length_error(what);
+        case k_out_of_range:
+            throw std::out_of_range(what);
+        case k_logic_error:
+            throw std::logic_error(what);
+        case k_range_error:
+            throw std::range_error(what);
+        case k_overflow_error:
+            throw std::overflow_error(what);
+        case k_underflow_error:
+            throw std::underflow_error(what);
+        case k_runtime_error:
+            throw std::runtime_error(what);
+        case k_bad_alloc:
+            throw std::bad_alloc();
+        case k_exception:
+            throw replayed_exception(what);
+        case k_unknown:
+            throw unknown_exception{};
     }
     fail("a recorded exception is of an unknown kind");
 }
@@ -159,8 +174,9 @@ extern "C" const char* workbook_replay_verdict() {
     if (s.problem.empty()) {
         const int tag = next_tag();
         if (tag < 0)
-            s.problem = "the record ends before the test case did (the submission's process ended early: exit, a "
-                        "crash or the time limit)";
+            s.problem =
+                "the record ends before the test case did (the submission's process ended early: exit, a "
+                "crash or the time limit)";
         else if (tag != tag_end)
             s.problem = "the record holds calls the grader did not make (after call " + std::to_string(s.calls) + ")";
         else if (s.at != s.data.size())

@@ -43,8 +43,10 @@ struct Source {
     template <class Rd, class R, class... A>
     void callable(Rd& r, std::function<R(A...)>& f) {
         const std::uint32_t id = r.u32();
-        if (id == 0xFFFFFFFFu) f = nullptr;
-        else f = replaying_closure<R, A...>(id);
+        if (id == 0xFFFFFFFFu)
+            f = nullptr;
+        else
+            f = replaying_closure<R, A...>(id);
     }
 };
 
@@ -109,13 +111,16 @@ R finish(const std::vector<Invoker>& invokers, const std::string& what) {
             if (slot >= invokers.size()) fail(what + ": the record calls a callable the grader did not pass");
             invokers[slot]();
         } else if (tag == tag_return) {
-            if constexpr (std::is_void_v<R>) return;
-            else return read_value<R>();
+            if constexpr (std::is_void_v<R>)
+                return;
+            else
+                return read_value<R>();
         } else if (tag == tag_throw) {
             throw_recorded();
         } else if (tag < 0) {
-            fail(what + ": the record stops inside this call (the submission's process ended there: exit, "
-                        "a crash or the time limit)");
+            fail(what +
+                 ": the record stops inside this call (the submission's process ended there: exit, "
+                 "a crash or the time limit)");
         } else {
             fail(what + ": the record has an unexpected event inside this call");
         }

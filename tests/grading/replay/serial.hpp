@@ -13,7 +13,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -41,12 +40,23 @@ inline constexpr const char* magic = "WBREC1\n";
 
 // Exceptions, by the most derived standard type they are (rigid::not_implemented first).
 enum Kind : unsigned char {
-    k_not_implemented = 1, k_invalid_argument, k_domain_error, k_length_error, k_out_of_range, k_logic_error,
-    k_range_error, k_overflow_error, k_underflow_error, k_runtime_error, k_bad_alloc, k_exception, k_unknown,
+    k_not_implemented = 1,
+    k_invalid_argument,
+    k_domain_error,
+    k_length_error,
+    k_out_of_range,
+    k_logic_error,
+    k_range_error,
+    k_overflow_error,
+    k_underflow_error,
+    k_runtime_error,
+    k_bad_alloc,
+    k_exception,
+    k_unknown,
 };
 
-inline constexpr std::uint32_t max_string = 1u << 16;      // an exception's message, a string field
-inline constexpr std::uint32_t max_dimension = 1u << 24;   // rows or columns of a matrix
+inline constexpr std::uint32_t max_string = 1u << 16;     // an exception's message, a string field
+inline constexpr std::uint32_t max_dimension = 1u << 24;  // rows or columns of a matrix
 
 struct bad_record : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -59,36 +69,51 @@ inline std::uint64_t fnv1a(const std::string& bytes) {
 }
 
 // ---- type traits -------------------------------------------------------------------------
-template <class T> struct is_vector : std::false_type {};
-template <class T, class A> struct is_vector<std::vector<T, A>> : std::true_type {};
-template <class T> struct is_array : std::false_type {};
-template <class T, std::size_t N> struct is_array<std::array<T, N>> : std::true_type {};
-template <class T> struct is_function : std::false_type {};
-template <class R, class... A> struct is_function<std::function<R(A...)>> : std::true_type {};
-template <class T> struct is_matrix : std::false_type {};
+template <class T>
+struct is_vector : std::false_type {};
+template <class T, class A>
+struct is_vector<std::vector<T, A>> : std::true_type {};
+template <class T>
+struct is_array : std::false_type {};
+template <class T, std::size_t N>
+struct is_array<std::array<T, N>> : std::true_type {};
+template <class T>
+struct is_function : std::false_type {};
+template <class R, class... A>
+struct is_function<std::function<R(A...)>> : std::true_type {};
+template <class T>
+struct is_matrix : std::false_type {};
 template <class S, int R, int C, int O, int MR, int MC>
 struct is_matrix<Eigen::Matrix<S, R, C, O, MR, MC>> : std::true_type {};
 
 // The fields of a plain struct, without naming them: count how many initialisers T{...} takes,
 // then bind that many with a structured binding.
 struct any_field {
-    template <class U> operator U() const;
+    template <class U>
+    operator U() const;
 };
 template <class T, class... A>
-constexpr auto initialisable(int) -> decltype(T{std::declval<A>()...}, true) { return true; }
+constexpr auto initialisable(int) -> decltype(T{std::declval<A>()...}, true) {
+    return true;
+}
 template <class T, class... A>
-constexpr bool initialisable(...) { return false; }
+constexpr bool initialisable(...) {
+    return false;
+}
 template <class T, class... A>
 constexpr std::size_t field_count() {
-    if constexpr (sizeof...(A) > 24) return 0;  // more than this: not supported (see fields())
-    else if constexpr (!initialisable<T, A..., any_field>(0)) return sizeof...(A);
-    else return field_count<T, A..., any_field>();
+    if constexpr (sizeof...(A) > 24)
+        return 0;  // more than this: not supported (see fields())
+    else if constexpr (!initialisable<T, A..., any_field>(0))
+        return sizeof...(A);
+    else
+        return field_count<T, A..., any_field>();
 }
 
-#define WB_FIELDS(N, ...)                                    \
-    if constexpr (n == N) {                                  \
-        auto& [__VA_ARGS__] = t;                             \
-        return std::forward_as_tuple(__VA_ARGS__);           \
+#define WB_FIELDS(N, ...)                          \
+    if constexpr (n == N) {                        \
+        auto& [__VA_ARGS__] = t;                   \
+        return std::forward_as_tuple(__VA_ARGS__); \
     } else
 template <class T>
 auto fields(T& t) {
@@ -259,8 +284,10 @@ std::uint64_t hash_inputs(const A&... a) {
 }
 
 // The decayed argument types of a callable's call, as a tuple to read them into.
-template <class F> struct signature;
-template <class R, class... A> struct signature<std::function<R(A...)>> {
+template <class F>
+struct signature;
+template <class R, class... A>
+struct signature<std::function<R(A...)>> {
     using result = R;
     using arguments = std::tuple<std::decay_t<A>...>;
 };

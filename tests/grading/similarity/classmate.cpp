@@ -1,11 +1,10 @@
 // A classmate's partial exercises/rotation.cpp, written by hand in a style of its own, for the
 // similarity report's measure: the class has it once as it is and once renamed and reformatted
 // (a copy between students), and the report must pair the two and tie neither to the reference.
-#include "rigid/rotation.hpp"
-
 #include <cmath>
 
 #include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
 #include "rigid/todo.hpp"
 
 namespace rigid {

@@ -2,13 +2,12 @@
 // rigid/rotation.hpp only (not from solutions/ or the hints), for the similarity report's
 // measure: it must earn full marks and match neither the reference nor the other honest ones.
 // Style: lean on Eigen's geometry module (AngleAxis, Quaternion), as the contract allows.
-#include "rigid/rotation.hpp"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
 
 namespace rigid {
 

@@ -2,12 +2,11 @@
 // rigid/rotation.hpp only (not from solutions/ or the hints), for the similarity report's
 // measure: it must earn full marks and match neither the reference nor the other honest ones.
 // Style: index notation, as [P] writes it (the Levi-Civita symbol), and Shepperd's method.
-#include "rigid/rotation.hpp"
-
 #include <cmath>
 #include <stdexcept>
 
 #include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
 
 namespace rigid {
 

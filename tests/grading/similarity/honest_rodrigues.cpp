@@ -2,13 +2,12 @@
 // rigid/rotation.hpp only (not from solutions/ or the hints), for the similarity report's
 // measure: it must earn full marks and match neither the reference nor the other honest ones.
 // Style: Rodrigues' formula with the matrix K = hat(n), quaternions as 4-vectors.
-#include "rigid/rotation.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
 
 namespace rigid {
 
@@ -23,21 +22,14 @@ static Quat half_turn(const AxisAngle& r, const char* name) {
 
 // Hamilton's product p q.
 static Quat times(const Quat& p, const Quat& q) {
-    return Quat(p(0) * q(0) - p(1) * q(1) - p(2) * q(2) - p(3) * q(3),
-                p(0) * q(1) + p(1) * q(0) + p(2) * q(3) - p(3) * q(2),
-                p(0) * q(2) - p(1) * q(3) + p(2) * q(0) + p(3) * q(1),
-                p(0) * q(3) + p(1) * q(2) - p(2) * q(1) + p(3) * q(0));
+    return Quat(
+        p(0) * q(0) - p(1) * q(1) - p(2) * q(2) - p(3) * q(3), p(0) * q(1) + p(1) * q(0) + p(2) * q(3) - p(3) * q(2),
+        p(0) * q(2) - p(1) * q(3) + p(2) * q(0) + p(3) * q(1), p(0) * q(3) + p(1) * q(2) - p(2) * q(1) + p(3) * q(0));
 }
 
-Mat3 hat(const Vec3& w) {
-    return (Mat3() << 0.0, -w.z(), w.y(),
-                      w.z(), 0.0, -w.x(),
-                      -w.y(), w.x(), 0.0).finished();
-}
+Mat3 hat(const Vec3& w) { return (Mat3() << 0.0, -w.z(), w.y(), w.z(), 0.0, -w.x(), -w.y(), w.x(), 0.0).finished(); }
 
-Vec3 vee(const Mat3& W) {
-    return Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)) * 0.5;
-}
+Vec3 vee(const Mat3& W) { return Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)) * 0.5; }
 
 Mat3 rotation_about(const Vec3& a, double phi) {
     const Vec3 n = require_axis(a, "rotation_about: axis");
