@@ -1,5 +1,6 @@
-// case: the untouched stubs, plus a constructor that execv()s the reference grader and the replay binary (fd 3 survives
-// an exec) base: stubs expect: * | not started | todo(
+// case: the untouched stubs, plus a constructor that execv()s the reference grader and the replay binary (fd 3 survives an exec)
+// base: stubs
+// expect: * | not started | todo(
 #include <unistd.h>
 
 #include <fstream>

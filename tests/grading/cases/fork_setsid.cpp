@@ -1,5 +1,7 @@
-// case: as root, forks a child that calls setsid() to leave the test's process group and, a second later, writes full
-// marks into the results needs: root replace: lab_angular_velocity expect: lab_angular_velocity | fail | expected
+// case: as root, forks a child that calls setsid() to leave the test's process group and, a second later, writes full marks into the results
+// needs: root
+// replace: lab_angular_velocity
+// expect: lab_angular_velocity | fail | expected
 // score: lab_angular_velocity 0
 #include <fcntl.h>
 #include <unistd.h>

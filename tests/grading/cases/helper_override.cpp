@@ -1,6 +1,7 @@
-// case: a strong definition of the graders' helper checks::max_abs_diff (inline in tests/checks.hpp) that always says
-// 0, with a wrong answer replace: lab_angular_velocity expect: lab_angular_velocity | fail | expected score:
-// lab_angular_velocity 0
+// case: a strong definition of the graders' helper checks::max_abs_diff (inline in tests/checks.hpp) that always says 0, with a wrong answer
+// replace: lab_angular_velocity
+// expect: lab_angular_velocity | fail | expected
+// score: lab_angular_velocity 0
 #include <Eigen/Dense>
 namespace checks {
 double max_abs_diff(const Eigen::MatrixXd&, const Eigen::MatrixXd&) { return 0; }

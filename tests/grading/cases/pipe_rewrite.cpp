@@ -1,6 +1,7 @@
-// case: a static initialiser puts its own pipe on fd 3 and, at exit, passes on what came through it with "false"
-// rewritten as "true" replace: lab_angular_velocity expect: lab_angular_velocity | fail | expected score:
-// lab_angular_velocity 0
+// case: a static initialiser puts its own pipe on fd 3 and, at exit, passes on what came through it with "false" rewritten as "true"
+// replace: lab_angular_velocity
+// expect: lab_angular_velocity | fail | expected
+// score: lab_angular_velocity 0
 #include <unistd.h>
 
 #include <cstdlib>

@@ -1,5 +1,7 @@
-// case: looks for the harness's files, the reference solutions and binaries, other students' work and the harness's
-// processes; answers right only if it finds none of them needs: namespaces replace: hat expect: * | pass
+// case: looks for the harness's files, the reference solutions and binaries, other students' work and the harness's processes; answers right only if it finds none of them
+// needs: namespaces
+// replace: hat
+// expect: * | pass
 #include <dirent.h>
 #include <unistd.h>
 

@@ -1,5 +1,7 @@
-// case: sets LD_PRELOAD and LD_LIBRARY_PATH and runs itself again (exec keeps fd 3), so that a second record follows
-// the first replace: compose expect: compose | fail score: compose 0
+// case: sets LD_PRELOAD and LD_LIBRARY_PATH and runs itself again (exec keeps fd 3), so that a second record follows the first
+// replace: compose
+// expect: compose | fail
+// score: compose 0
 #include <unistd.h>
 
 #include <cstdlib>

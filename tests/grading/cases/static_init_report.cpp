@@ -1,5 +1,7 @@
-// case: the untouched stubs, plus a static initialiser that writes a complete passing report to fd 3 and exits before
-// main base: stubs expect: * | not started | todo( score: hat 0
+// case: the untouched stubs, plus a static initialiser that writes a complete passing report to fd 3 and exits before main
+// base: stubs
+// expect: * | not started | todo(
+// score: hat 0
 #include <unistd.h>
 namespace {
 const int forged = [] {

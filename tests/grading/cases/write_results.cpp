@@ -1,5 +1,7 @@
-// case: writes forged full-mark results by path into the out folder, for itself and for another student, then answers
-// wrongly replace: lab_angular_velocity expect: lab_angular_velocity | fail | expected score: lab_angular_velocity 0
+// case: writes forged full-mark results by path into the out folder, for itself and for another student, then answers wrongly
+// replace: lab_angular_velocity
+// expect: lab_angular_velocity | fail | expected
+// score: lab_angular_velocity 0
 #include <cstdio>
 #include <string>
 namespace rigid {
