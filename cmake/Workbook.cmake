@@ -307,7 +307,7 @@ set(WORKBOOK_CORNER_BUDGET 3 CACHE STRING "The --budget (seconds) of the corner 
 function(_workbook_scene_corners name chapter base)
   set(dir "${CMAKE_BINARY_DIR}/corners")
   set(list_file "${dir}/${name}.cmake")
-  math(EXPR timeout "3 * ${WORKBOOK_CORNER_BUDGET} + 40")
+  math(EXPR timeout "10 * ${WORKBOOK_CORNER_BUDGET} + 90")
   add_custom_command(TARGET ${name} POST_BUILD
     COMMAND ${CMAKE_COMMAND} -DSCENE=$<TARGET_FILE:${name}> -DNAME=${name} -DCHAPTER=${chapter} "-DBASE=${base}"
             -DBUDGET=${WORKBOOK_CORNER_BUDGET} -DTIMEOUT=${timeout} -DOUT=${list_file} -DWORK=${dir}/runs
