@@ -301,6 +301,40 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
     }
 }
 
+// "Order is slope": for each fixed-step method on each scenario, the least-squares slope of
+// log10(error) against log10(run time) and against log10(evaluations of the equations, a fixed
+// number per step), over the runs whose error lies
+// between 1e3 times the scenario's double-precision floor and 1e-3 (clear of the floor and of the
+// first, coarsest steps). A method of order p has slope -p against steps (or evaluations); against run time the
+// same, as far as the time is proportional to the steps. Fewer than three runs there: no slope.
+void report_slopes(kit::Scene& scene, const Sweeps& w) {
+    auto fit = [](const std::vector<double>& x, const std::vector<double>& y) {
+        double mx = 0, my = 0;
+        for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / double(x.size()), my += y[i] / double(x.size());
+        double sxy = 0, sxx = 0;
+        for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+        return sxy / sxx;
+    };
+    for (const bench::Scenario& sc : w.all) {
+        const double floor = w.refs.at(sc.name).double_floor;
+        for (const bench::Method& m : bench::methods()) {
+            if (m.kind != bench::Kind::step || !w.points.at(sc.name).count(m.name)) continue;
+            std::vector<double> lt, ls, le;
+            for (const bench::Point& pt : w.points.at(sc.name).at(m.name))
+                if (!pt.failed && pt.m.error < 1e-3 && pt.m.error > 1e3 * floor && pt.time_s > 0 && pt.evaluations > 0)
+                    lt.push_back(std::log10(pt.time_s)), ls.push_back(std::log10(double(pt.evaluations))),
+                        le.push_back(std::log10(pt.m.error));
+            if (lt.size() < 3) continue;
+            const std::string k = sc.name + "_" + m.name + "_slope_";
+            scene.report.add(k + "time", fit(lt, le),
+                             "d log10(error) / d log10(run time), errors in (1e3 floor, 1e-3)");
+            scene.report.add(k + "evaluations", fit(ls, le),
+                             "d log10(error) / d log10(evaluations of the equations, proportional to the steps), "
+                             "the same runs");
+        }
+    }
+}
+
 // The right-hand side itself, on the first scenario run (Grioli's heavy top when it is there).
 void report_rhs_cost(kit::Scene& scene, const Sweeps& w) {
     const auto& all = w.all;
@@ -457,6 +491,7 @@ int main(int argc, char** argv) {
         const Sweeps w = run_sweeps(o, p);
         write_runs(scene, w);
         write_summary(scene, w);
+        report_slopes(scene, w);
         report_rhs_cost(scene, w);
         draw_work_precision(scene, w);
         draw_invariants(scene, w);
