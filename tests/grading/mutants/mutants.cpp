@@ -129,7 +129,7 @@ bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c 
 std::string function_name(const std::string& s, const std::vector<bool>& code, std::size_t from, std::size_t open,
                           std::string* header) {
     std::string h;
-    for (std::size_t k = from; k < open; ++k) h += code[k] ? s[k] : ' ';
+    for (std::size_t k = from; k < open; ++k) h += code[k] && s[k] != '\n' ? s[k] : ' ';
     *header = trim(h);
     const auto paren = h.find('(');
     if (paren == std::string::npos || h.find("namespace") != std::string::npos) return "";
@@ -319,7 +319,10 @@ std::vector<Mutant> mutants_of(const std::string& topic, const fs::path& file, c
             // Only the part of the line inside the body (a one-line function has its header too).
             for (std::size_t k = 0; k < mask.size(); ++k)
                 if (line_begin + k <= body->begin || line_begin + k >= body->end) mask[k] = false;
-            const bool returns_bool = body->header.rfind("bool ", 0) == 0;
+            // bool f(...), static bool f(...), [[nodiscard]] bool f(...): the word before the name.
+            const std::string before_name = trim(body->header.substr(0, body->header.find(body->name + "(")));
+            const bool returns_bool = before_name.size() >= 4 && before_name.substr(before_name.size() - 4) == "bool" &&
+                                      (before_name.size() == 4 || !is_ident(before_name[before_name.size() - 5]));
             for (const auto& site : mutate_line(line, mask, returns_bool)) {
                 Mutant m;
                 m.topic = topic, m.function = body->name, m.op = site.op, m.line = line_number;
