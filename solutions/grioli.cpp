@@ -51,8 +51,8 @@ Moments moments(double A, double B, double C) {
         throw std::invalid_argument("the moments must satisfy B < C, got B = " + number(B) + ", C = " + number(C));
     const double CB = C - B;
     if (!(CB <= A))
-        throw std::invalid_argument("the moments must satisfy the triangle inequality A + B >= C, got A + B = " +
-                                    number(A + B) + " < C = " + number(C));
+        throw std::invalid_argument("the moments must satisfy the triangle inequality A + B >= C, got A = " +
+                                    number(A) + ", B = " + number(B) + ", C = " + number(C));
     return {A, B, C, B - A, CB};
 }
 

@@ -247,6 +247,7 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
         << options.test_limits.wall_seconds << " " << options.test_limits.memory_mb << " "
         << options.test_limits.output_bytes << " " << options.build_limits.wall_seconds << " "
         << options.build_limits.memory_mb << " " << options.max_file_bytes << "\n";
+    for (const auto& e : options.test_environment) all << "env " << e << "\n";
     for (const auto& f : files)
         all << f.topic << " " << f.state << " " << f.reason << " " << hex(hash(f.content)) << "\n";
     return hex(hash(all.str()));
@@ -286,8 +287,26 @@ Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& fil
     Built b{"", "", work_dir + "/bin/grade_" + topic.name};
     write_file(source, file.content);
     std::vector<std::string> compile;
-    for (const auto& w : topic.compile) compile.push_back(w == "@SOURCE@" ? source : w == "@OBJECT@" ? object : w);
-    Outcome o = run_limited(compile, work_dir, log, g.options.build_limits);
+    std::string key = file.content;
+    for (const auto& w : topic.compile) {
+        compile.push_back(w == "@SOURCE@" ? source : w == "@OBJECT@" ? object : w);
+        key += "\n" + w;
+    }
+    // --object-cache (the mutation gate): the same source with the same command is compiled once.
+    const std::string cached = g.options.object_cache.empty()
+                                   ? std::string()
+                                   : g.options.object_cache + "/" + topic.name + "-" + hex(hash(key)) + ".o";
+    Outcome o;
+    if (!cached.empty() && !read_file(cached).empty() && write_file(object, read_file(cached))) {
+        o.started = true, o.exit_code = 0;
+        write_file(log, "(compiled once before: " + cached + ")\n");
+    } else {
+        o = run_limited(compile, work_dir, log, g.options.build_limits);
+        if (!cached.empty() && o.started && !o.timed_out && !o.signal && o.exit_code == 0) {
+            make_dirs(g.options.object_cache);
+            write_file(cached, read_file(object));
+        }
+    }
     std::string text = g.relative(read_file(log));
     std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
     if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
@@ -335,6 +354,8 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
     bool overflow = false;
     Limits limits = g.options.test_limits;
     limits.isolate = true;
+    limits.environment.insert(limits.environment.end(), g.options.test_environment.begin(),
+                              g.options.test_environment.end());
     const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
                                    "--out=/dev/null", "--no-exitcode", "--no-version", "--no-colors"},
                                   run_dir, output_path, limits, &record, 256u << 20, &overflow);

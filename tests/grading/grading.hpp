@@ -146,6 +146,11 @@ struct Options {
     Limits build_limits{120, 4096, 256L << 20, false, false, {}};
     long max_file_bytes = 1 << 20;
     bool keep_work = false;
+    // The mutation gate's (tests/grading/mutants/): NAME=VALUE pairs added to each test's
+    // environment, and a folder of compiled objects keyed by the source and the compile command,
+    // so that one file graded many times is compiled once.
+    std::vector<std::string> test_environment;
+    std::string object_cache;
 };
 
 // One topic's file as found in a submission.

@@ -59,7 +59,10 @@ const char* usage =
     "                         a name that itself holds a comma is taken whole); for sharding: no class files\n"
     "  --assignment <name>    the column of canvas.csv and moodle.csv (default: Grioli workbook)\n"
     "  --force                grade again even when a result for the same inputs exists\n"
-    "  --keep-work            keep each submission's build folder (<out>/.work/)\n";
+    "  --keep-work            keep each submission's build folder (<out>/.work/)\n"
+    "the mutation gate's (tests/grading/mutants/mutants.cpp):\n"
+    "  --test-env NAME=VALUE  add to each test's environment (repeat it)\n"
+    "  --object-cache <dir>   compile a file once for many gradings (keyed by source and command)\n";
 
 int fail(const std::string& message) {
     std::fprintf(stderr, "workbook_grade: %s\n", message.c_str());
@@ -133,6 +136,14 @@ Args parse(int argc, char** argv) {
             a.force = true;
         else if (o == "--keep-work")
             a.options.keep_work = true;
+        else if (o == "--test-env") {
+            const std::string e = take();
+            if (e.find('=') == std::string::npos || e.front() == '=')
+                std::fprintf(stderr, "workbook_grade: --test-env needs NAME=VALUE, not '%s'\n", e.c_str()),
+                    std::exit(2);
+            a.options.test_environment.push_back(e);
+        } else if (o == "--object-cache")
+            a.options.object_cache = take();
         else if (o == "-h" || o == "--help")
             std::printf("%s", usage), std::exit(0);
         else if (starts_with(o, "-") && o.size() > 1)

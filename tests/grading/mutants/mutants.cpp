@@ -10,7 +10,8 @@
 // by one of a fixed set of operators (mutate_line below; comments, string and character literals
 // and preprocessor lines are never touched). Each mutant is a submission holding that one file,
 // graded by the grading run (workbook_grade check: its build flags, per-test isolation, limits
-// and verdicts), -j at a time. A mutant inside an exercise function is killed when a test of
+// and verdicts), -j at a time. To spare the compiler, up to 40 mutants of a topic are built as one
+// file, a schema, and picked at run time (see "Schemata" below; --one-by-one builds each alone). A mutant inside an exercise function is killed when a test of
 // that exercise does not pass, so only that exercise's tests are run; a mutant inside a helper
 // of the file is killed when any test of the topic does not pass, so all of them are run. A
 // mutant that does not build is counted apart. A survivor is equivalent only when allowed.txt
@@ -40,11 +41,14 @@ namespace {
 
 struct Mutant {
     std::string id, topic, function, op;
-    int line = 0;                  // 1-based line of solutions/<topic>.cpp
-    std::string before, after;     // the line, trimmed, before and after the change
-    std::string source;            // the whole mutated file
-    bool exercise = false;         // function is an exercise of the topic (else a helper)
-    std::string status, evidence;  // killed | survived | equivalent | not compiling
+    int line = 0;                                // 1-based line of solutions/<topic>.cpp
+    std::string before, after;                   // the line, trimmed, before and after the change
+    std::string source;                          // the whole mutated file
+    bool exercise = false;                       // function is an exercise of the topic (else a helper)
+    std::string status, evidence;                // killed | survived | equivalent | not compiling
+    std::size_t change_from = 0, change_to = 0;  // the original's characters [from, to) that the change replaces
+    int selector = 0;                            // its number in a schema (0: graded alone)
+    std::string schema;                          // the schema's folder of exercises, when selector > 0
 };
 
 struct Options {
@@ -53,6 +57,7 @@ struct Options {
     int sample = 0, jobs = 2;
     unsigned seed = 1;
     double timeout = 30, build_timeout = 900;  // generous: a loaded machine must not kill a mutant
+    bool one_by_one = false;                   // --one-by-one: no schemata, each mutant built alone
 };
 
 [[noreturn]] void die(const std::string& message) {
@@ -124,7 +129,7 @@ bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c 
 std::string function_name(const std::string& s, const std::vector<bool>& code, std::size_t from, std::size_t open,
                           std::string* header) {
     std::string h;
-    for (std::size_t k = from; k < open; ++k) h += code[k] ? s[k] : ' ';
+    for (std::size_t k = from; k < open; ++k) h += code[k] && s[k] != '\n' ? s[k] : ' ';
     *header = trim(h);
     const auto paren = h.find('(');
     if (paren == std::string::npos || h.find("namespace") != std::string::npos) return "";
@@ -314,12 +319,21 @@ std::vector<Mutant> mutants_of(const std::string& topic, const fs::path& file, c
             // Only the part of the line inside the body (a one-line function has its header too).
             for (std::size_t k = 0; k < mask.size(); ++k)
                 if (line_begin + k <= body->begin || line_begin + k >= body->end) mask[k] = false;
-            const bool returns_bool = body->header.rfind("bool ", 0) == 0;
+            // bool f(...), static bool f(...), [[nodiscard]] bool f(...): the word before the name.
+            const std::string before_name = trim(body->header.substr(0, body->header.find(body->name + "(")));
+            const bool returns_bool = before_name.size() >= 4 && before_name.substr(before_name.size() - 4) == "bool" &&
+                                      (before_name.size() == 4 || !is_ident(before_name[before_name.size() - 5]));
             for (const auto& site : mutate_line(line, mask, returns_bool)) {
                 Mutant m;
                 m.topic = topic, m.function = body->name, m.op = site.op, m.line = line_number;
                 m.before = trim(line), m.after = trim(site.line);
                 m.source = s.substr(0, line_begin) + site.line + s.substr(line_end);
+                std::size_t p = 0, q = 0;  // the common prefix and suffix of the line and its mutant
+                while (p < line.size() && p < site.line.size() && line[p] == site.line[p]) ++p;
+                while (q < line.size() - p && q < site.line.size() - p &&
+                       line[line.size() - 1 - q] == site.line[site.line.size() - 1 - q])
+                    ++q;
+                m.change_from = line_begin + p, m.change_to = line_end - q;
                 m.exercise = exercises.count(body->name) > 0;
                 result.push_back(std::move(m));
             }
@@ -421,6 +435,153 @@ std::map<std::string, std::string> allowlist(const std::string& path) {
     return allowed;
 }
 
+// ---- Schemata: many mutants in one build. ----
+// Compiling the mutated file is nearly all of a mutant's cost (2 to 9 CPU-seconds a file; a
+// mutant's tests take well under one). So the mutants of a topic are built together, up to
+// kSchemaSize in one file, a schema, in which each function body with mutants becomes
+//     if (workbook_mutant_() == k1) { <body with mutant k1> } else if ... else { <body> }
+// and the test's environment (WORKBOOK_MUTANT=k, workbook_grade check --test-env) picks the
+// mutant when the test runs. The grading run compiles the schema once (--object-cache) and grades
+// each mutant with its own k. Before that, the schema is graded with k = 0, the reference
+// solution itself: it must build and pass every test. A mutant whose branch does not compile
+// there is taken out and graded alone, the slow way (and then usually counts as not compiling).
+
+constexpr std::size_t kSchemaSize = 40;
+
+const char* const kSelector =
+    "// The mutation gate's schema (tests/grading/mutants/mutants.cpp): the environment's\n"
+    "// WORKBOOK_MUTANT picks one mutant; unset or 0, this is the reference solution.\n"
+    "#include <cstdlib>\n"
+    "namespace {\n"
+    "[[maybe_unused]] int workbook_mutant_() {\n"
+    "    static const int k = [] {\n"
+    "        const char* e = std::getenv(\"WORKBOOK_MUTANT\");\n"
+    "        return e ? std::atoi(e) : 0;\n"
+    "    }();\n"
+    "    return k;\n"
+    "}\n"
+    "}  // namespace\n";
+
+struct Schema {
+    std::string topic, name, text;
+    std::vector<std::size_t> members;                  // indices into the run's mutants
+    std::map<std::size_t, std::pair<int, int>> lines;  // member -> its branch's first and last line
+};
+
+int lines_in(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+// The schema of `members` (mutants of one topic; their selectors are set here).
+Schema make_schema(const std::string& name, const std::string& original, std::vector<Mutant>& mutants,
+                   const std::vector<std::size_t>& members) {
+    const auto bodies = function_bodies(original, code_mask(original));
+    std::map<std::size_t, std::vector<std::size_t>> by_body;  // body index -> members in it
+    for (std::size_t i : members) {
+        const Mutant& m = mutants[i];
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            if (bodies[b].begin < m.change_from && m.change_to <= bodies[b].end) by_body[b].push_back(i);
+    }
+    Schema sc{mutants[members.front()].topic, name, kSelector, {}, {}};
+    std::size_t at = 0;
+    for (const auto& [b, inside] : by_body) {
+        const Body& body = bodies[b];
+        sc.text += original.substr(at, body.begin + 1 - at) + "\n";
+        for (std::size_t i : inside) {
+            Mutant& m = mutants[i];
+            m.selector = static_cast<int>(i) + 1;
+            const std::size_t tail = original.size() - m.change_to;  // the unchanged end of the file
+            const std::string mutated = original.substr(body.begin + 1, m.change_from - body.begin - 1) +
+                                        m.source.substr(m.change_from, m.source.size() - tail - m.change_from) +
+                                        original.substr(m.change_to, body.end - m.change_to);
+            const int first = lines_in(sc.text) + 1;
+            sc.text += "if (workbook_mutant_() == " + std::to_string(m.selector) + ") {" + mutated + "\n} else ";
+            sc.lines[i] = {first, lines_in(sc.text) + 1};
+            sc.members.push_back(i);
+        }
+        sc.text += "{" + original.substr(body.begin + 1, body.end - body.begin - 1) + "\n}\n";
+        at = body.end;
+    }
+    sc.text += original.substr(at);
+    return sc;
+}
+
+// The lines of exercises/<topic>.cpp that a failed build's log names (errors, notes, "required from").
+std::set<int> named_lines(const std::string& log, const std::string& topic) {
+    std::set<int> lines;
+    const std::regex re("exercises/" + topic + R"(\.cpp:(\d+):)");
+    for (auto it = std::sregex_iterator(log.begin(), log.end(), re); it != std::sregex_iterator(); ++it)
+        lines.insert(std::stoi((*it)[1]));
+    return lines;
+}
+
+pid_t start_check(const Options& o, const Mutant& m, const fs::path& folder, const fs::path& out, bool whole_topic);
+
+// Grades the schema with WORKBOOK_MUTANT=0 until it builds and passes: a branch that does not build
+// is taken out (its mutant graded alone); a schema that still fails after that is given up (all
+// its mutants graded alone). Returns whether the schema stands.
+bool settle(const Options& o, Schema& sc, std::vector<Mutant>& mutants, const fs::path& dir,
+            const std::string& original) {
+    for (int attempt = 0; attempt < 6 && !sc.members.empty(); ++attempt) {
+        const fs::path folder = dir / sc.name / "exercises", out = dir / sc.name / "reference";
+        fs::create_directories(folder);
+        std::ofstream(folder / (sc.topic + ".cpp")) << sc.text;
+        Mutant reference = mutants[sc.members.front()];
+        reference.selector = 0;
+        int status = 0;
+        waitpid(start_check(o, reference, folder, out, true), &status, 0);
+        const fs::path result = out / "results.json";
+        if (!fs::exists(result)) break;
+        const json r = json::parse(slurp(result));
+        bool built = true, passed = true;
+        for (const auto& t : r.at("tests")) {
+            if (t.at("extra_data").at("topic") != sc.topic) continue;  // the other topics are missing
+            built = built && t.at("extra_data").at("verdict") != "build error";
+            passed = passed && t.at("extra_data").at("verdict") == "pass";
+        }
+        if (passed) return true;
+        if (built) break;  // the reference fails a test inside the schema: do not trust it
+        const fs::path log = out / "logs" / (sc.topic + ".build.txt");
+        const std::set<int> named = named_lines(fs::exists(log) ? slurp(log) : "", sc.topic);
+        std::vector<std::size_t> keep, out_of_it;
+        for (std::size_t i : sc.members) {
+            const auto [first, last] = sc.lines.at(i);
+            const bool broken = std::any_of(named.begin(), named.end(), [&](int l) { return first <= l && l <= last; });
+            (broken ? out_of_it : keep).push_back(i);
+        }
+        if (out_of_it.empty()) break;  // the log names no branch: give the schema up
+        for (std::size_t i : out_of_it) mutants[i].selector = 0;
+        sc = make_schema(sc.name, original, mutants, keep);
+    }
+    for (std::size_t i : sc.members) mutants[i].selector = 0;
+    std::fprintf(stderr,
+                 "workbook_mutants: schema %s does not pass with the reference; its %zu mutants are built one by one\n",
+                 sc.name.c_str(), sc.members.size());
+    sc.members.clear();
+    return false;
+}
+
+// Puts the mutants (of the run) into schemata under <out>/schemata, kSchemaSize at a time per topic.
+void build_schemata(const Options& o, std::vector<Mutant>& mutants, const fs::path& out) {
+    const fs::path dir = out / "schemata";
+    fs::remove_all(dir);
+    std::map<std::string, std::vector<std::size_t>> by_topic;
+    for (std::size_t i = 0; i < mutants.size(); ++i) by_topic[mutants[i].topic].push_back(i);
+    for (const auto& [topic, all] : by_topic) {
+        const std::string original = slurp(fs::path(o.solutions) / (topic + ".cpp"));
+        for (std::size_t from = 0; from < all.size(); from += kSchemaSize) {
+            const std::vector<std::size_t> members(
+                all.begin() + static_cast<std::ptrdiff_t>(from),
+                all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), from + kSchemaSize)));
+            Schema sc = make_schema(topic + "-" + std::to_string(from / kSchemaSize + 1), original, mutants, members);
+            const std::size_t n = sc.members.size();
+            if (settle(o, sc, mutants, dir, original)) {
+                for (std::size_t i : sc.members) mutants[i].schema = (dir / sc.name / "exercises").string();
+                std::fprintf(stderr, "workbook_mutants: schema %s: %zu of %zu mutants in one build\n", sc.name.c_str(),
+                             sc.members.size(), n);
+            }
+        }
+    }
+}
+
 // ---- Grading: each mutant is a submission holding that one file, graded by the grading run's
 // student check (workbook_grade check: the same build flags, isolation, limits and verdicts as
 // `grade`) on what can kill it: its exercise, or its whole topic for a helper. Tests of the
@@ -429,24 +590,31 @@ std::map<std::string, std::string> allowlist(const std::string& path) {
 void write_submissions(const std::vector<Mutant>& mutants, const fs::path& folder) {
     fs::remove_all(folder);
     for (const auto& m : mutants) {
+        if (m.selector) continue;  // graded from its schema's folder
         fs::create_directories(folder / m.id / "exercises");
         std::ofstream(folder / m.id / "exercises" / (m.topic + ".cpp")) << m.source;
     }
 }
 
-// Starts `workbook_grade check` on one mutant, its output to <checks>/<id>.log; returns the pid.
-pid_t start_check(const Options& o, const Mutant& m, const fs::path& submissions, const fs::path& checks) {
+// Starts `workbook_grade check` on one mutant (its file in `folder`), its results in `out` and its
+// output in <out>.log; returns the pid. A schema's mutant runs with WORKBOOK_MUTANT set to its
+// selector (0: the reference), and the schema is compiled once for all of them.
+pid_t start_check(const Options& o, const Mutant& m, const fs::path& folder, const fs::path& out, bool whole_topic) {
     const std::string harness = (fs::path(o.setup) / "workbook_grade").string();
     std::vector<std::string> args = {harness,           "check",
                                      "--setup",         o.setup,
-                                     "--folder",        (submissions / m.id / "exercises").string(),
-                                     "--out",           (checks / m.id).string(),
+                                     "--folder",        folder.string(),
+                                     "--out",           out.string(),
                                      "--timeout",       std::to_string(o.timeout),
                                      "--build-timeout", std::to_string(o.build_timeout)};
+    if (m.selector || !m.schema.empty() || whole_topic) {
+        args.insert(args.end(), {"--test-env", "WORKBOOK_MUTANT=" + std::to_string(m.selector), "--object-cache",
+                                 (fs::path(o.out) / "objects").string(), "--max-file-size", "16384"});
+    }
     // A helper's mutant: every topic (the others are missing from the submission, so not built;
     // naming the topic could select an exercise of the same name, such as heavy_top).
-    if (m.exercise) args.push_back(m.function);
-    const std::string log = (checks / (m.id + ".log")).string();
+    if (m.exercise && !whole_topic) args.push_back(m.function);
+    const std::string log = out.string() + ".log";
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -470,7 +638,9 @@ void run_checks(const Options& o, const std::vector<Mutant>& mutants, const fs::
     std::size_t next = 0;
     while (next < mutants.size() || !running.empty()) {
         while (next < mutants.size() && static_cast<int>(running.size()) < o.jobs) {
-            running[start_check(o, mutants[next], submissions, checks)] = next;
+            const Mutant& m = mutants[next];
+            const fs::path folder = m.selector ? fs::path(m.schema) : submissions / m.id / "exercises";
+            running[start_check(o, m, folder, checks / m.id, false)] = next;
             ++next;
         }
         int status = 0;
@@ -572,6 +742,7 @@ int run(const Options& o) {
     const auto allowed = allowlist(o.allow);
     const fs::path out = o.out, submissions = out / "submissions", checks = out / "checks";
     fs::create_directories(out);
+    if (!o.one_by_one) build_schemata(o, mutants, out);
     write_submissions(mutants, submissions);
     std::fprintf(stderr, "workbook_mutants: grading %zu mutants with -j %d\n", mutants.size(), o.jobs);
     const auto start = std::chrono::steady_clock::now();
@@ -606,7 +777,7 @@ Options parse(int argc, char** argv) {
     Options o;
     if (argc < 2)
         die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
-            "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s]");
+            "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] [--one-by-one]");
     o.command = argv[1];
     if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
     for (int i = 2; i < argc; ++i) {
@@ -645,6 +816,8 @@ Options parse(int argc, char** argv) {
             o.timeout = number(1);
         else if (a == "--build-timeout")
             o.build_timeout = number(1);
+        else if (a == "--one-by-one")
+            o.one_by_one = true;
         else
             die("unknown option '" + a + "'");
     }
