@@ -171,8 +171,11 @@ LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& 
 bool item_II_rule_holds(const Moments& m, const Mat3& R0, const Vec3& k) {
     const Vec3 kb = R0.transpose() * require_axis(k, "vertical k");  // k in the body frame
     const Vec3 z = grioli_rotation_vector(m);
-    // With R_A and R_C oriented so that z(0) has positive components on both, R_A lies inside
-    // the right angle between z(0) and k's projection when k_A > 0 and k_C < 0.
+    // z(0) = (z_A, 0, z_C) [P, (4.10)]. The axis R_A lies inside the right angle between z(0) and
+    // k's projection when the two have components of the same sign on R_A and of opposite signs
+    // on R_C: k_A z_A > 0 and k_C z_C < 0. (On the four placements of the contract k is
+    // perpendicular to z(0), k_A z_A + k_C z_C = 0, so each half implies the other; both are
+    // kept, as the rule reads.)
     return kb.x() * z.x() > 0 && kb.z() * z.z() < 0;
 }
 

@@ -126,17 +126,19 @@ struct LabPlacement {
 LabPlacement place_item_II(const Moments& m, double f, Sense sense, const Vec3& up = Vec3::UnitZ(),
                            const Vec3& toward = Vec3::UnitX());
 
-// The corrected rule of step 4, for any placement R0 (body -> lab) of the Theorem 1 body with
-// its intermediate axis along the line of b: true when R_A lies inside the right angle
-// between z(0) = R0 a and the projection of k on the plane of R_A and R_C.
+// The corrected rule of step 4, for the four placements R0 (body -> lab) of the Theorem 1 body
+// that steps 1-3 leave open: its intermediate axis on the line of b and its centre-of-mass axis
+// on the line of a (so k is perpendicular to it). True when R_A lies inside the right angle
+// between the centre-of-mass axis z(0) and the projection of k on the plane of R_A and R_C.
 bool item_II_rule_holds(const Moments& m, const Mat3& R0, const Vec3& k);
 // end snippet
 
 // snippet: grioli_integrate
 // Theorem 1 checked by integration: the Euler-Poisson equations (3.1)-(3.2) of grioli_top in
 // their gap form (euler_poisson_rhs_gaps), started from grioli_initial_state and integrated
-// with integrate_gsl over `periods` periods 2 pi / alpha, compared at `samples_per_period`
-// points per period with grioli_rotation.
+// with integrate_gsl over `periods` periods 2 pi / alpha, compared with grioli_rotation (and
+// grioli_angular_velocity) at the times linspace(0, periods 2 pi / alpha, n), n = ceil(periods
+// samples_per_period): `samples_per_period` points per period, both ends included.
 struct PrecessionCheck {
     double max_rotation_error;  // max geodesic_angle(R_integrated, R_exact), radians
     double max_omega_error;     // max |Omega - Omega_exact| / alpha
