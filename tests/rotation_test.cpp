@@ -186,17 +186,33 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK_FALSE(rigid::is_rotation(S, 0.99 * defect));
     }
 
+    TEST_CASE("is_rotation: an exact rotation passes at tol 0 and a singular matrix fails at any tolerance") {
+        // The defect of an exact rotation is 0, and 0 <= 0: tol = 0 is allowed and is met.
+        CHECK(rigid::is_rotation(Mat3::Identity(), 0.0));
+        Mat3 quarter;
+        quarter << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // a quarter turn about e3, exact in double
+        CHECK(rigid::is_rotation(quarter, 0.0));
+        // det R > 0 is required however large the tolerance on the defect: det 0 is not > 0.
+        CHECK_FALSE(rigid::is_rotation(Mat3::Zero(), 100.0));
+        CHECK_FALSE(rigid::is_rotation(Vec3(1, 1, 0).asDiagonal().toDenseMatrix(), 100.0));
+    }
+
     TEST_CASE("axis_angle: inverts rotation_about from 0 to pi including near 0 and near pi") {
-        const Vec3 a = Vec3(0.2, -0.9, 0.4).normalized();
-        for (double phi : {1e-9, 1e-4, 0.3, pi / 2 - 1e-9, pi / 2, pi / 2 + 1e-9, 2.0, 3.0, pi - 1e-4, pi - 1e-9}) {
-            CAPTURE(phi);
-            const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
-            CHECK_NEAR(r.angle, phi, 4e-16 * pi + 1e-15 * phi);
-            // The axis is well defined (and must be accurate) once phi is not tiny.
-            if (phi > 1e-5) CHECK_MAT_NEAR(r.axis, a, 2e-12 / std::min(1.0, phi));
-            // Whatever the angle, axis and angle must rebuild R.
-            CHECK_MAT_NEAR(angle_axis(r.axis, r.angle), angle_axis(a, phi), 1e-14);
-        }
+        // Both signs of the axis: its largest component negative, then positive.
+        for (const Vec3& a : {Vec3(0.2, -0.9, 0.4).normalized(), Vec3(-0.2, 0.9, -0.4).normalized()})
+            for (double phi : {1e-9, 1e-4, 0.3, pi / 2 - 1e-9, pi / 2, pi / 2 + 1e-9, 2.0, 3.0, pi - 1e-4, pi - 1e-9}) {
+                CAPTURE(a.transpose());
+                CAPTURE(phi);
+                const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
+                CHECK_NEAR(r.angle, phi, 4e-16 * pi + 1e-15 * phi);
+                // The axis is well defined (and must be accurate) once phi is not tiny. Here R is
+                // rounded from an exact axis, so sin(phi) a, read from R - R^T, keeps the axis to a
+                // few eps at any angle (1.7e-16 at phi = 1e-4, measured); reading it from
+                // 1 - cos(phi) instead loses about eps / phi^2 (1.1e-10 at 1e-4, 8.7e-12 at 1e-3).
+                if (phi > 1e-5) CHECK_MAT_NEAR(r.axis, a, std::max(2e-15, 1e-16 / phi));
+                // Whatever the angle, axis and angle must rebuild R.
+                CHECK_MAT_NEAR(angle_axis(r.axis, r.angle), angle_axis(a, phi), 1e-14);
+            }
     }
 
     TEST_CASE("axis_angle: a half turn gives pi and the axis up to sign") {
@@ -231,6 +247,19 @@ TEST_SUITE("ch01_pure_rotations") {
             CHECK_LE(c.angle, pi);
             CHECK_NEAR(c.axis.norm(), 1.0, 1e-14);
         }
+    }
+
+    TEST_CASE("compose: a half turn followed by no turn is that half turn") {
+        // The half-angle vector of the result then has norm 1 exactly and its scalar part is 0.
+        const Vec3 a = Vec3(1, 2, -2) / 3.0;
+        for (const rigid::AxisAngle& r :
+             {rigid::compose({a, pi}, {Vec3::UnitX(), 0.0}), rigid::compose({Vec3::UnitY(), 0.0}, {a, pi})}) {
+            CHECK_NEAR(r.angle, pi, 1e-15);
+            CHECK_NEAR(std::abs(r.axis.dot(a)), 1.0, 1e-15);
+        }
+        const rigid::AxisAngle q = rigid::compose({Vec3::UnitZ(), pi / 2}, {Vec3::UnitZ(), pi / 2});
+        CHECK_NEAR(q.angle, pi, 1e-15);
+        CHECK_NEAR(std::abs(q.axis.z()), 1.0, 1e-15);
     }
 
     TEST_CASE("compose: the order matters as for matrices") {
@@ -307,6 +336,9 @@ TEST_SUITE("ch01_pure_rotations") {
                        1e-15);
         const Vec3 u(0.3, -1.2, 0.4);
         CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
+        // Exactly parallel (the cross product is exactly zero): still the identity, not a half turn.
+        CHECK_MAT_NEAR(rigid::rotation_between(u, u), Mat3::Identity(), 1e-15);
+        CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 3 * Vec3::UnitX()), Mat3::Identity(), 0.0);
         // 1e-9 rad apart: the angle keeps its digits (acos of the dot product would give 0 or 1.5e-8).
         const Vec3 w = angle_axis(u.cross(Vec3::UnitZ()), 1e-9) * u;
         CHECK_NEAR(Eigen::AngleAxisd(rigid::rotation_between(u, w)).angle(), 1e-9, 1e-15);
