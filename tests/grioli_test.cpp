@@ -657,8 +657,8 @@ TEST_SUITE("ch05_grioli_precession") {
                         std::invalid_argument);
         const Vec3 toward(1e-6, 0, 1);
         const rigid::LabPlacement p = rigid::place_item_II(m, 1e-300, Sense::cw, Vec3(0, 0, 1e-300), toward);
-        CHECK_MAT_NEAR(p.k, Vec3::UnitZ(), 1e-15);
-        CHECK_NEAR(std::abs(p.b.y()), 0.0, 1e-15);  // tilted in the plane of k and toward: y = 0
+        CHECK_MAT_NEAR(p.k, Vec3::UnitZ(), 4e-15);
+        CHECK_NEAR(std::abs(p.b.y()), 0.0, 4e-15);  // tilted in the plane of k and toward: y = 0
         CHECK_NEAR(std::atan2(std::hypot(p.b.x(), p.b.y()), p.b.z()), std::atan2(0.7, 1.7), 1e-13);  // theta
         CHECK(rel(p.alpha, std::sqrt(1e-300L / S_ld({1.0, 0.7, 0.7}))) <= 4e-16);
     }

@@ -668,7 +668,7 @@ TEST_SUITE("ch04_heavy_top") {
         const Vec3 b(0, std::sqrt(1 - b3 * b3), b3), k(0.5e-12, 0.6, 0.8);
         const rigid::PrecessionSeries s = rigid::torque_series(k, z0, 1.0, 2.0, b3);
         for (double t : {0.3, 2.9})
-            CHECK_MAT_NEAR(series_at(s, 1.0, 2.0, t), T_ref(k, z0, Vec3::UnitZ(), 1.0, b, 2.0, t), 2e-12);
+            CHECK_MAT_NEAR(series_at(s, 1.0, 2.0, t), T_ref(k, z0, Vec3::UnitZ(), 1.0, b, 2.0, t), 5e-12);
         // z0 = 0 is "any vector": no torque at all.
         const rigid::PrecessionSeries zero = rigid::torque_series(Vec3(0, 0.6, 0.8), Vec3::Zero(), 1.0, 2.0, b3);
         CHECK_MAT_NEAR(as_rows(zero), Eigen::MatrixXd::Zero(11, 3), 0.0);
