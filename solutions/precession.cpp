@@ -101,7 +101,7 @@ CircleFit fit_circle(const std::vector<Vec3>& points) {
 
 Circle precession_lab_circle(const RegularPrecession& p) {
     precession_rotation(p, 0.0);  // the bad-input rules of (1.4)
-    const Vec3 a = p.a.normalized(), b = p.b.normalized();
+    const Vec3 a = p.a.stableNormalized(), b = p.b.stableNormalized();
     // omega(t) = beta b + alpha R^b(beta t) a: the part of a along b stays, the rest turns.
     return Circle{(p.beta + p.alpha * a.dot(b)) * b, b, p.alpha * a.cross(b).norm()};
 }

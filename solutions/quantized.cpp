@@ -77,9 +77,9 @@ double spin_projection_rate(const SpinField& field, const Vec3& S) {
 }
 
 double spin_angle(const Vec3& B, const Vec3& S) {
-    require_axis(B, "the field B");
-    require_axis(S, "the spin S");
-    return std::atan2(S.cross(B).norm(), S.dot(B));
+    // From the unit vectors: |S x B| of two vectors below ~1e-77 each would underflow to 0.
+    const Vec3 b = require_axis(B, "the field B"), s = require_axis(S, "the spin S");
+    return std::atan2(s.cross(b).norm(), s.dot(b));
 }
 
 // |S| is constant and d(S . B^)/dt = beta |B| (S . B^) sin^2 theta; with S . B^ = |S| cos theta,

@@ -244,3 +244,61 @@ TEST_SUITE("ch03_free_body") {
     }
 
 }  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/free_body.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+namespace {
+
+// Moments that are no body, each just across one rule: a moment at or just below 0 or not
+// finite, or one moment 1e-12 (about 1500 ulp) more than the sum of the other two.
+std::vector<Vec3> bad_moments() {
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    std::vector<Vec3> bad;
+    for (double x : {0.0, -0.0, -tiny, inf_, -inf_, nan_})
+        for (int i = 0; i < 3; ++i) {
+            Vec3 I(2, 3, 4);
+            I(i) = x;
+            bad.push_back(I);
+        }
+    bad.push_back(Vec3(1, 2, 3 + 1e-12));
+    bad.push_back(Vec3(3 + 1e-12, 1, 2));
+    bad.push_back(Vec3(2, 3 + 1e-12, 1));
+    return bad;
+}
+
+}  // namespace
+
+TEST_SUITE("ch03_free_body") {
+    TEST_CASE(
+        "free_body_equations: rejects moments just across each rule and accepts the flat body and a tiny moment") {
+        for (const Vec3& I : bad_moments()) {
+            CAPTURE(I.transpose());
+            CHECK_THROWS_AS(rigid::free_body_equations(I), std::invalid_argument);
+        }
+        // The triangle inequality with equality, in each position, is a flat body: accepted.
+        const VecX y = rigid::pack({Vec3(1, 1, 1), Mat3::Identity()});
+        for (const Vec3& I : {Vec3(1, 2, 3), Vec3(3, 1, 2), Vec3(2, 3, 1)}) {
+            const VecX d = rigid::free_body_equations(I)(0.0, y);
+            CHECK_MAT_NEAR(d.head<3>(), Vec3((I(1) - I(2)) / I(0), (I(2) - I(0)) / I(1), (I(0) - I(1)) / I(2)), 1e-15);
+        }
+        // A moment just above 0 (a thin rod along that axis) is a body too.
+        CHECK_NOTHROW(rigid::free_body_equations(Vec3(1e-300, 1, 1)));
+    }
+
+    TEST_CASE(
+        "wobble_frequency_squared: rejects moments or an axis or a spin just across each rule and accepts the edges") {
+        for (const Vec3& I : bad_moments())
+            CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, 0, 1.0), std::invalid_argument);
+        const Vec3 I(1, 2, 3);  // flat: accepted
+        for (int axis : {-1, 3})
+            CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, axis, 1.0), std::invalid_argument);
+        for (double spin : {nan_, inf_, -inf_})
+            CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, 1, spin), std::invalid_argument);
+        // The first and last axis, a spin of 0 and a negative spin are all valid. About axis k,
+        // nu^2 = spin^2 (I_k - I_i)(I_k - I_j) / (I_i I_j).
+        CHECK_NEAR(rigid::wobble_frequency_squared(I, 0, 2.0), 4.0 * (1 - 2) * (1 - 3) / (2 * 3), 1e-15);
+        CHECK_NEAR(rigid::wobble_frequency_squared(I, 2, -1.0), (3 - 1) * (3 - 2) / (1 * 2.0), 1e-15);
+        CHECK_SMALL(std::abs(rigid::wobble_frequency_squared(I, 1, 0.0)), 0.0);
+    }
+}  // TEST_SUITE

@@ -8,6 +8,8 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "checks.hpp"
 #include "rigid/ode.hpp"
@@ -519,4 +521,229 @@ TEST_SUITE("ch04_heavy_top") {
         CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, pi / 2), Vec3(0, -1, 0), 1e-15);
     }
 
+}  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/heavy_top.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+namespace {
+
+const double tiny_ = std::numeric_limits<double>::denorm_min();
+const double inf_ = std::numeric_limits<double>::infinity();
+
+// Vectors that are no axis: zero (of either sign) or not finite.
+std::vector<Vec3> bad_vectors() {
+    return {Vec3(0, 0, 0), Vec3(-0.0, 0, 0), Vec3(0, inf_, 1), Vec3(0, 0, -inf_), Vec3(nan_, 0, 1)};
+}
+
+// The series summed here, term by term (not by the student's evaluate).
+Vec3 series_at(const rigid::PrecessionSeries& s, double alpha, double beta, double t) {
+    const double gp = (alpha + beta) * t, gm = (alpha - beta) * t;
+    return s.constant + s.cos_alpha * std::cos(alpha * t) + s.sin_alpha * std::sin(alpha * t) +
+           s.cos_2alpha * std::cos(2 * alpha * t) + s.sin_2alpha * std::sin(2 * alpha * t) +
+           s.cos_beta * std::cos(beta * t) + s.sin_beta * std::sin(beta * t) + s.cos_plus * std::cos(gp) +
+           s.sin_plus * std::sin(gp) + s.cos_minus * std::cos(gm) + s.sin_minus * std::sin(gm);
+}
+
+}  // namespace
+
+TEST_SUITE("ch04_heavy_top") {
+    TEST_CASE("heavy_top: rejects J just past symmetric or definite and f <= 0 and bad vectors and accepts the edges") {
+        Mat3 J = Vec3(2, 3, 4).asDiagonal();
+        J(0, 1) = J(1, 0) = 0.5;
+        const Vec3 k = Vec3::UnitZ(), z0 = Vec3::UnitX();
+        // Symmetric to 1e-12 of the largest entry (4): a 1.2e-11 difference is refused, 1e-12 is not.
+        Mat3 off = J;
+        off(1, 0) += 1.2e-11;
+        CHECK_THROWS_AS(rigid::heavy_top(off, 1.0, k, z0), std::invalid_argument);
+        off(1, 0) = J(1, 0) + 1e-12;
+        CHECK(rigid::heavy_top(off, 1.0, k, z0).J == off);
+        for (double x : {inf_, nan_}) {
+            Mat3 bad = J;
+            bad(2, 2) = x;
+            CHECK_THROWS_AS(rigid::heavy_top(bad, 1.0, k, z0), std::invalid_argument);
+        }
+        // Positive definite: a zero or tiny negative eigenvalue is refused, a tiny positive one is not.
+        for (double x : {0.0, -tiny_, -1e-300})
+            CHECK_THROWS_AS(rigid::heavy_top(Vec3(2, 3, x).asDiagonal(), 1.0, k, z0), std::invalid_argument);
+        CHECK_NOTHROW(rigid::heavy_top(Vec3(2, 3, 1e-300).asDiagonal(), 1.0, k, z0));
+        for (double f : {0.0, -0.0, -tiny_, inf_, -inf_, nan_}) {
+            CAPTURE(f);
+            CHECK_THROWS_AS(rigid::heavy_top(J, f, k, z0), std::invalid_argument);
+        }
+        CHECK(rigid::heavy_top(J, tiny_, k, z0).f == tiny_);
+        for (const Vec3& v : bad_vectors()) {
+            CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, v, z0), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, k, v), std::invalid_argument);
+        }
+        // Vectors of length 1e-300 are directions: returned as unit vectors.
+        const rigid::HeavyTop top = rigid::heavy_top(J, 1.0, 1e-300 * Vec3(0, 0.6, 0.8), 1e-300 * Vec3(-0.8, 0, 0.6));
+        CHECK_MAT_NEAR(top.k, Vec3(0, 0.6, 0.8), 1e-16);
+        CHECK_MAT_NEAR(top.z0, Vec3(-0.8, 0, 0.6), 1e-16);
+    }
+
+    TEST_CASE(
+        "euler_vector: rejects a bad axis or a non-finite alpha or beta or t and accepts zero and negative "
+        "frequencies") {
+        const Mat3 J = random_inertia();
+        const Vec3 a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 0);
+        for (const Vec3& v : bad_vectors()) {
+            CHECK_THROWS_AS(rigid::euler_vector(J, {v, 1.0, b, 1.0}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, v, 1.0}, 0.3), std::invalid_argument);
+        }
+        for (double x : {inf_, -inf_, nan_}) {
+            CHECK_THROWS_AS(rigid::euler_vector(J, {a, x, b, 1.0}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, b, x}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, b, 1.0}, x), std::invalid_argument);
+        }
+        // Any finite frequency is valid: 0 and negative ones too, with the formula unchanged.
+        for (const auto& [alpha, beta] : {std::pair{0.0, 1.3}, {-0.9, 0.0}, {-0.9, -1.3}, {0.0, 0.0}}) {
+            CAPTURE(alpha);
+            CAPTURE(beta);
+            CHECK_MAT_NEAR(rigid::euler_vector(J, {a, alpha, b, beta}, 0.3), E_ref(J, a, alpha, b, beta, 0.3), 1e-13);
+        }
+    }
+
+    TEST_CASE(
+        "torque: rejects a bad axis or a non-finite alpha or beta or t and accepts zero and negative frequencies") {
+        const Vec3 k = Vec3(0.6, 0, 0.8), z0 = Vec3(0, 1, 0), a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 0);
+        for (const Vec3& v : bad_vectors()) {
+            CHECK_THROWS_AS(rigid::torque(k, z0, {v, 1.0, b, 1.0}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, v, 1.0}, 0.3), std::invalid_argument);
+        }
+        for (double x : {inf_, -inf_, nan_}) {
+            CHECK_THROWS_AS(rigid::torque(k, z0, {a, x, b, 1.0}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, b, x}, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, b, 1.0}, x), std::invalid_argument);
+        }
+        for (const auto& [alpha, beta] : {std::pair{0.0, 1.3}, {-0.9, 0.0}, {-0.9, -1.3}, {0.0, 0.0}}) {
+            CAPTURE(alpha);
+            CAPTURE(beta);
+            CHECK_MAT_NEAR(rigid::torque(k, z0, {a, alpha, b, beta}, 0.3), T_ref(k, z0, a, alpha, b, beta, 0.3), 1e-15);
+        }
+    }
+
+    TEST_CASE(
+        "euler_vector_series: rejects b3 = -1 or 1 or a non-finite alpha or beta or J and accepts b3 next to -1 and "
+        "1") {
+        const Mat3 J = random_inertia();
+        for (double b3 : {1.0, -1.0, std::nextafter(1.0, 2.0), inf_, -inf_, nan_}) {
+            CAPTURE(b3);
+            CHECK_THROWS_AS(rigid::euler_vector_series(J, 1.0, 2.0, b3), std::invalid_argument);
+        }
+        for (double x : {inf_, -inf_, nan_}) {
+            CHECK_THROWS_AS(rigid::euler_vector_series(J, x, 2.0, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::euler_vector_series(J, 1.0, x, 0.3), std::invalid_argument);
+            Mat3 bad = J;
+            bad(0, 2) = bad(2, 0) = x;
+            CHECK_THROWS_AS(rigid::euler_vector_series(bad, 1.0, 2.0, 0.3), std::invalid_argument);
+        }
+        // The last b3 inside (-1, 1), where b2 = sqrt(1 - b3^2) is about 1.5e-8 (or 2.1e-8):
+        // the series still sums to E along a = e3, b = (0, b2, b3).
+        for (double b3 : {std::nextafter(1.0, 0.0), std::nextafter(-1.0, 0.0)}) {
+            CAPTURE(b3);
+            const Vec3 b(0, std::sqrt((1 - b3) * (1 + b3)), b3);
+            const rigid::PrecessionSeries s = rigid::euler_vector_series(J, 0.8, -1.7, b3);
+            for (double t : {0.3, 2.9})
+                CHECK_MAT_NEAR(series_at(s, 0.8, -1.7, t), E_ref(J, Vec3::UnitZ(), 0.8, b, -1.7, t), 1e-13);
+        }
+    }
+
+    TEST_CASE(
+        "torque_series: rejects k just outside the plane of a and b or b3 = -1 or 1 and accepts k just inside and any "
+        "z0") {
+        const Vec3 z0(0.3, -0.5, 0.8);
+        // |k_1| <= 1e-12 |k|: 2e-12 is refused, 0.5e-12 accepted (|k| = 1).
+        CHECK_THROWS_AS(rigid::torque_series(Vec3(2e-12, 0.6, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::torque_series(Vec3(-2e-12, 0.6, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
+        for (double b3 : {1.0, -1.0, inf_, nan_})
+            CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, 1, 2, b3), std::invalid_argument);
+        for (double x : {inf_, -inf_, nan_}) {
+            CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, x, 2, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, 1, x, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque_series(Vec3(0, x, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), Vec3(0, 0, x), 1, 2, 0.3), std::invalid_argument);
+        }
+        const double b3 = 0.3;
+        const Vec3 b(0, std::sqrt(1 - b3 * b3), b3), k(0.5e-12, 0.6, 0.8);
+        const rigid::PrecessionSeries s = rigid::torque_series(k, z0, 1.0, 2.0, b3);
+        for (double t : {0.3, 2.9})
+            CHECK_MAT_NEAR(series_at(s, 1.0, 2.0, t), T_ref(k, z0, Vec3::UnitZ(), 1.0, b, 2.0, t), 5e-12);
+        // z0 = 0 is "any vector": no torque at all.
+        const rigid::PrecessionSeries zero = rigid::torque_series(Vec3(0, 0.6, 0.8), Vec3::Zero(), 1.0, 2.0, b3);
+        CHECK_MAT_NEAR(as_rows(zero), Eigen::MatrixXd::Zero(11, 3), 0.0);
+    }
+
+    TEST_CASE("precession_residual: rejects n = 15 or a bad frequency or axis and accepts n = 16") {
+        const Mat3 J = random_inertia();
+        const Vec3 k = Vec3(0, 0.6, 0.8), z0 = Vec3(0.8, 0, 0.6), a = Vec3::UnitZ(), b = Vec3(0, 0.8, 0.6);
+        const rigid::HeavyTop top = top_of(J, 1.7, k, z0);
+        for (int n : {15, 0, -16})
+            CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, b, 1.9}, n), std::invalid_argument);
+        for (double x : {0.0, -tiny_, inf_, nan_}) {
+            CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, x, b, 1.9}), std::invalid_argument);
+            CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, b, x}), std::invalid_argument);
+        }
+        for (const Vec3& v : bad_vectors()) {
+            CHECK_THROWS_AS((void)rigid::precession_residual(top, {v, 0.8, b, 1.9}), std::invalid_argument);
+            CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, v, 1.9}), std::invalid_argument);
+        }
+        // n = 16, the fewest samples allowed: the RMS over t_j = (j + 1/2) L / 16.
+        const double L = 4 * pi / 0.8;
+        double sum = 0;
+        for (int j = 0; j < 16; ++j) {
+            const double t = (j + 0.5) * L / 16;
+            sum += (E_ref(J, a, 0.8, b, 1.9, t) - 1.7 * T_ref(k, z0, a, 0.8, b, 1.9, t)).squaredNorm();
+        }
+        const double expected = std::sqrt(sum / 16) / 1.7;
+        CHECK_NEAR(rigid::precession_residual(top, {a, 0.8, b, 1.9}, 16), expected, 1e-12 * expected);
+    }
+
+    TEST_CASE(
+        "min_precession_residual: rejects moments or gamma or ratio or restarts just across each rule and accepts the "
+        "edges") {
+        const rigid::PrecessionSearch ok{.moments = Vec3(1, 2, 3), .gamma = 1.0, .ratio = 1.0, .restarts = 1};
+        auto with = [&ok](auto change) {
+            rigid::PrecessionSearch s = ok;
+            change(s);
+            return s;
+        };
+        std::vector<rigid::PrecessionSearch> bad;
+        for (double x : {0.0, -tiny_, inf_, nan_}) {
+            bad.push_back(with([x](auto& s) { s.moments(1) = x; }));
+            bad.push_back(with([x](auto& s) { s.ratio = x; }));
+        }
+        bad.push_back(with([](auto& s) { s.moments = Vec3(1, 2, 3 + 1e-12); }));  // the triangle inequality
+        bad.push_back(with([](auto& s) { s.moments = Vec3(3 + 1e-12, 2, 1); }));
+        for (double g : {0.0, -tiny_, pi, std::nextafter(pi, 4.0), inf_, nan_})
+            bad.push_back(with([g](auto& s) { s.gamma = g; }));
+        bad.push_back(with([](auto& s) { s.restarts = 0; }));
+        bad.push_back(with([](auto& s) { s.restarts = -1; }));
+        for (const rigid::PrecessionSearch& s : bad) {
+            CAPTURE(s.moments.transpose());
+            CAPTURE(s.gamma);
+            CAPTURE(s.ratio);
+            CAPTURE(s.restarts);
+            CHECK_THROWS_AS(rigid::min_precession_residual(s), std::invalid_argument);
+        }
+        // A flat body, gamma just below pi, one restart: a search, in the frame of [P, (3.3)].
+        const rigid::PrecessionSearch edge = with([](auto& s) { s.gamma = std::nextafter(pi, 0.0); });
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(edge);
+        CHECK(fit.residual >= 0);
+        CHECK(fit.evaluations > 0);
+        CHECK_MAT_NEAR(fit.precession.a, Vec3::UnitZ(), 1e-15);
+        CHECK_NEAR(fit.precession.beta, fit.precession.alpha, 1e-15 * fit.precession.alpha);
+    }
+
+    TEST_CASE("sleeping_top_min_spin: rejects A or C or f just across each rule and accepts C = 2A") {
+        for (double x : {0.0, -0.0, -tiny_, inf_, -inf_, nan_}) {
+            CAPTURE(x);
+            CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(x, 1.0, 1.0), std::invalid_argument);
+            CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, x, 1.0), std::invalid_argument);
+            CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, 1.0, x), std::invalid_argument);
+        }
+        CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, 2.0 + 1e-12, 1.0), std::invalid_argument);
+        // C = 2A, a flat disc: the threshold C^2 omega^2 = 4 A f, omega = 2 sqrt(A f) / C.
+        CHECK_NEAR(rigid::sleeping_top_min_spin(1.5, 3.0, 2.0), 2 * std::sqrt(3.0) / 3.0, 1e-15);
+    }
 }  // TEST_SUITE

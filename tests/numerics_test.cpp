@@ -399,3 +399,21 @@ TEST_SUITE("ch07_numerics") {
     }
 
 }  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/numerics.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+TEST_SUITE("ch07_numerics") {
+    TEST_CASE("rk4_energy_loss: rejects x just below 0 or infinite and accepts x = 0 and the smallest x") {
+        const double tiny = std::numeric_limits<double>::denorm_min(), inf = std::numeric_limits<double>::infinity();
+        for (double x : {-tiny, -1e-300, -inf}) {
+            CAPTURE(x);
+            CHECK_THROWS_AS((void)rigid::rk4_energy_loss(x), std::invalid_argument);
+        }
+        // x = 0 and the next doubles up lose nothing a double can hold; x = 1e-50 keeps its
+        // leading term x^6 / 72 = 1.3888...e-302 (no underflow yet).
+        CHECK(std::abs(rigid::rk4_energy_loss(0.0)) == 0.0);
+        CHECK(std::abs(rigid::rk4_energy_loss(tiny)) == 0.0);
+        CHECK_NEAR(rigid::rk4_energy_loss(1e-50) / (1e-300 / 72), 1.0, 1e-14);
+    }
+}  // TEST_SUITE

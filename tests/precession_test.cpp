@@ -313,3 +313,145 @@ TEST_SUITE("ch02_regular_precession") {
     }
 
 }  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/precession.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+namespace {
+
+const double tiny_ = std::numeric_limits<double>::denorm_min();
+const double inf_ = std::numeric_limits<double>::infinity();
+
+// Constants that break one rule each: a frequency at or just below 0 or not finite, an axis
+// that is zero or not finite.
+std::vector<RegularPrecession> bad_precessions() {
+    const Vec3 a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 1);
+    std::vector<RegularPrecession> bad;
+    for (double w : {0.0, -0.0, -tiny_, -1.0, inf_, -inf_, nan_}) {
+        bad.push_back({a, w, b, 1.0});
+        bad.push_back({a, 1.0, b, w});
+    }
+    for (const Vec3& v : {Vec3(0, 0, 0), Vec3(-0.0, 0, 0), Vec3(0, inf_, 1), Vec3(-inf_, 0, 0), Vec3(0, 0, nan_)}) {
+        bad.push_back({v, 1.0, b, 1.0});
+        bad.push_back({a, 1.0, v, 1.0});
+    }
+    return bad;
+}
+
+// The first good constants beyond the rules: the smallest positive frequency, axes of length
+// 1e-300 (normalised as any other).
+std::vector<RegularPrecession> edge_precessions() {
+    const Vec3 a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 1);
+    return {{a, tiny_, b, 1.3}, {a, 0.7, b, tiny_}, {1e-300 * a, 0.7, 1e-300 * b, 1.3}};
+}
+
+}  // namespace
+
+TEST_SUITE("ch02_regular_precession") {
+    TEST_CASE(
+        "precession_rotation: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest alpha and "
+        "beta") {
+        for (const RegularPrecession& p : bad_precessions()) {
+            CAPTURE(p.alpha);
+            CAPTURE(p.beta);
+            CHECK_THROWS_AS(rigid::precession_rotation(p, 0.4), std::invalid_argument);
+        }
+        const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
+        for (double t : {nan_, inf_, -inf_})
+            CHECK_THROWS_AS(rigid::precession_rotation(good, t), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions())
+            CHECK_MAT_NEAR(
+                rigid::precession_rotation(p, 0.4),
+                angle_axis(p.b.stableNormalized(), p.beta * 0.4) * angle_axis(p.a.stableNormalized(), p.alpha * 0.4),
+                4e-15);
+    }
+
+    TEST_CASE(
+        "precession_body_angular_velocity: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest "
+        "alpha and beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS(rigid::precession_body_angular_velocity(p, 0.4), std::invalid_argument);
+        const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
+        for (double t : {nan_, inf_, -inf_})
+            CHECK_THROWS_AS(rigid::precession_body_angular_velocity(good, t), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            const Vec3 a = p.a.stableNormalized(), b = p.b.stableNormalized();
+            const Vec3 expected = p.alpha * a + p.beta * angle_axis(a, p.alpha * 0.4).transpose() * b;
+            CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, 0.4), expected, 4e-15);
+        }
+    }
+
+    TEST_CASE(
+        "precession_lab_angular_velocity: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest "
+        "alpha and beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS(rigid::precession_lab_angular_velocity(p, 0.4), std::invalid_argument);
+        const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
+        for (double t : {nan_, inf_, -inf_})
+            CHECK_THROWS_AS(rigid::precession_lab_angular_velocity(good, t), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            const Vec3 a = p.a.stableNormalized(), b = p.b.stableNormalized();
+            const Vec3 expected = p.beta * b + p.alpha * angle_axis(b, p.beta * 0.4) * a;
+            CHECK_MAT_NEAR(rigid::precession_lab_angular_velocity(p, 0.4), expected, 4e-15);
+        }
+    }
+
+    TEST_CASE(
+        "precession_omega_squared: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS((void)rigid::precession_omega_squared(p), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            // |Omega(0)|^2 = |alpha a + beta b|^2.
+            const Vec3 W0 = p.alpha * p.a.stableNormalized() + p.beta * p.b.stableNormalized();
+            CHECK_NEAR(rigid::precession_omega_squared(p), W0.squaredNorm(), 4e-15);
+        }
+    }
+
+    TEST_CASE(
+        "precession_axial_component: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and "
+        "beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS((void)rigid::precession_axial_component(p), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            const Vec3 a = p.a.stableNormalized(), W0 = p.alpha * a + p.beta * p.b.stableNormalized();
+            CHECK_NEAR(rigid::precession_axial_component(p), a.dot(W0), 4e-15);
+        }
+    }
+
+    TEST_CASE(
+        "precession_omega_circle: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS((void)rigid::precession_omega_circle(p), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            const Vec3 a = p.a.stableNormalized(), W0 = p.alpha * a + p.beta * p.b.stableNormalized();
+            const rigid::Circle c = rigid::precession_omega_circle(p);
+            CHECK_MAT_NEAR(c.centre, a.dot(W0) * a, 1e-15);
+            CHECK_MAT_NEAR(c.normal, a, 1e-15);
+            CHECK_NEAR(c.radius, (W0 - a.dot(W0) * a).norm(), 4e-15);
+        }
+    }
+
+    TEST_CASE(
+        "precession_lab_circle: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
+        for (const RegularPrecession& p : bad_precessions())
+            CHECK_THROWS_AS((void)rigid::precession_lab_circle(p), std::invalid_argument);
+        for (const RegularPrecession& p : edge_precessions()) {
+            const Vec3 b = p.b.stableNormalized(), w0 = p.alpha * p.a.stableNormalized() + p.beta * b;
+            const rigid::Circle c = rigid::precession_lab_circle(p);
+            CHECK_MAT_NEAR(c.centre, b.dot(w0) * b, 4e-15);
+            CHECK_MAT_NEAR(c.normal, b, 1e-15);
+            CHECK_NEAR(c.radius, (w0 - b.dot(w0) * b).norm(), 4e-15);
+        }
+    }
+
+    TEST_CASE("fit_circle: rejects an infinite point and accepts exactly 3 points") {
+        CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3(0, -inf_, 0), Vec3::UnitZ()}), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3::UnitY(), Vec3(0, 0, inf_)}), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::fit_circle({}), std::invalid_argument);
+        // 3 points, the fewest allowed: the circumcircle of (0, 0, 2), (0, 2, 0), (2, 0, 0).
+        const rigid::CircleFit f = rigid::fit_circle({Vec3(0, 0, 2), Vec3(0, 2, 0), Vec3(2, 0, 0)});
+        CHECK_MAT_NEAR(f.circle.centre, Vec3(2, 2, 2) / 3, 1e-14);
+        CHECK_NEAR(f.circle.radius, std::sqrt(8.0 / 3), 1e-14);
+        CHECK_NEAR(std::abs(f.circle.normal.dot(Vec3(1, 1, 1) / std::sqrt(3.0))), 1.0, 1e-14);
+    }
+}  // TEST_SUITE

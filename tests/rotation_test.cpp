@@ -3,6 +3,7 @@
 #include "rigid/rotation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -384,4 +385,76 @@ TEST_SUITE("ch01_pure_rotations") {
         }
     }
 
+}  // TEST_SUITE
+
+// ---- Bad input at its boundary: every "throws ... for ..." rule of exercises/rigid/rotation.hpp ----
+// The last bad value is refused with std::invalid_argument and the first good value beyond it
+// is accepted, with the right answer. Graders check the exception's type, never its wording.
+TEST_SUITE("ch01_pure_rotations") {
+    TEST_CASE("rotation_about: rejects every infinite or NaN axis or angle and accepts the smallest axis") {
+        for (double bad : {nan_, inf_, -inf_}) {
+            CAPTURE(bad);
+            CHECK_THROWS_AS(rigid::rotation_about(Vec3(1, 2, bad), 1.0), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::rotation_about(Vec3(1, 2, 3), bad), std::invalid_argument);
+        }
+        CHECK_THROWS_AS(rigid::rotation_about(Vec3(-0.0, 0.0, -0.0), 1.0), std::invalid_argument);
+        // The first axis beyond zero: the smallest positive double, still a direction.
+        const double tiny = std::numeric_limits<double>::denorm_min();
+        CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, tiny, 0), 1.0), angle_axis(Vec3::UnitY(), 1.0), 1e-15);
+        CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, 0, -tiny), 1.0), angle_axis(-Vec3::UnitZ(), 1.0), 1e-15);
+    }
+
+    TEST_CASE("is_rotation: rejects a negative or non-finite tolerance and accepts tol = 0") {
+        const double tiny = std::numeric_limits<double>::denorm_min();
+        for (double bad : {-tiny, -1e-300, inf_, -inf_, nan_}) {
+            CAPTURE(bad);
+            CHECK_THROWS_AS((void)rigid::is_rotation(Mat3::Identity(), bad), std::invalid_argument);
+        }
+        // tol = 0 is the first good tolerance: the identity (defect exactly 0) passes it, a
+        // matrix off by one ulp does not.
+        CHECK(rigid::is_rotation(Mat3::Identity(), 0.0));
+        CHECK_FALSE(rigid::is_rotation((1 + 4 * std::numeric_limits<double>::epsilon()) * Mat3::Identity(), 0.0));
+        CHECK(rigid::is_rotation(Mat3::Identity(), tiny));
+    }
+
+    TEST_CASE("axis_angle: rejects a defect just above 1e-9 and accepts one just below") {
+        const Vec3 a = Vec3(1, -2, 2) / 3;
+        const Mat3 R = angle_axis(a, 1.0);
+        // (1 + d) R has the defect sqrt(3) (2 d + d^2).
+        auto scaled = [&](double defect) { return Mat3((1 + defect / (2 * std::sqrt(3.0))) * R); };
+        CHECK_THROWS_AS(rigid::axis_angle(scaled(1.05e-9)), std::invalid_argument);
+        const rigid::AxisAngle r = rigid::axis_angle(scaled(0.95e-9));
+        CHECK_NEAR(r.angle, 1.0, 1e-8);
+        CHECK_MAT_NEAR(r.axis, a, 1e-8);
+        Mat3 bad = R;
+        bad(2, 1) = inf_;
+        CHECK_THROWS_AS(rigid::axis_angle(bad), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::axis_angle(Vec3(1, 1, -1).asDiagonal().toDenseMatrix()), std::invalid_argument);
+    }
+
+    TEST_CASE("compose: rejects a bad axis or angle in either rotation and accepts the smallest axes") {
+        const Vec3 a(2, 1, -1);
+        for (double bad : {nan_, inf_, -inf_}) {
+            CAPTURE(bad);
+            CHECK_THROWS_AS(rigid::compose({a, 0.5}, {Vec3(0, bad, 1), 0.5}), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::compose({Vec3(bad, 0, 1), 0.5}, {a, 0.5}), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::compose({a, bad}, {a, 0.5}), std::invalid_argument);
+            CHECK_THROWS_AS(rigid::compose({a, 0.5}, {a, bad}), std::invalid_argument);
+        }
+        CHECK_THROWS_AS(rigid::compose({a, 0.5}, {Vec3::Zero(), 0.5}), std::invalid_argument);
+        // Axes of length 1e-300 are axes: normalised, they compose like unit ones.
+        const Vec3 b(0, 1, 3);
+        const rigid::AxisAngle c = rigid::compose({1e-300 * a, 0.7}, {1e-300 * b, 1.1});
+        CHECK_MAT_NEAR(angle_axis(c.axis, c.angle), angle_axis(b, 1.1) * angle_axis(a, 0.7), 1e-14);
+    }
+
+    TEST_CASE("rotation_between: rejects an infinite vector and accepts vectors of length 1e-300") {
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3(-inf_, 0, 0), Vec3::UnitY()), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitY(), Vec3(0, 0, nan_)), std::invalid_argument);
+        CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitY(), Vec3(-0.0, 0.0, 0.0)), std::invalid_argument);
+        const Vec3 u = Vec3(1, 2, 2) / 3, v = Vec3(-2, 1, 0) / std::sqrt(5.0);
+        const Mat3 R = rigid::rotation_between(1e-300 * u, 1e-300 * v);
+        CHECK_MAT_NEAR(R * u, v, 1e-15);
+        CHECK_MAT_NEAR(R, angle_axis(u.cross(v), std::acos(u.dot(v))), 1e-14);
+    }
 }  // TEST_SUITE
