@@ -418,6 +418,25 @@ TEST_SUITE("ch06_grioli_lines") {
         CHECK(rigid::region(body0, z.x() * 4, z.z() * 4) == 0);
     }
 
+    TEST_CASE("region: is 0 exactly on the hyperbola and on the asymptotes") {
+        // A_g, B_g, C_g = 2, 3, 4 and mu = 1: every number below is exact in double. At O = G + (0, 0, 1)
+        // the moments along x_A, x_B, x_C are 2 + 1, 3 + 1, 4: B = C, a point of the hyperbola.
+        const BodyAtG b{2, 3, 4, 1};
+        CHECK(rigid::region(b, 0, 1) == 0);
+        CHECK(rigid::region(b, 0, -1) == 0);
+        CHECK(rigid::region(b, 0, 0.5) == 3);  // short of it: 2.25 < 3.25 < 4
+        CHECK(rigid::region(b, 0, -0.5) == 4);
+        CHECK(rigid::region(b, 0, 2) == 5);  // past it: x_C's moment 4 is below x_B's 7
+        CHECK(rigid::region(b, 0, -2) == 6);
+        // The asymptotes x_C = +-x_A (here (C_g - B_g) x_A^2 = (B_g - A_g) x_C^2).
+        for (double x : {0.5, 1.0, 3.0}) {
+            CHECK(rigid::region(b, x, x) == 0);
+            CHECK(rigid::region(b, -x, x) == 0);
+            CHECK(rigid::region(b, x, 0.5 * x) == 1);
+            CHECK(rigid::region(b, -x, 0.5 * x) == 2);
+        }
+    }
+
     // ------------------------------------------------------------------------------ (5.9)-(5.13)
 
     TEST_CASE("smallest_axis_tilt: is the angle between the eigen-solver's smallest axis and z") {
