@@ -12,11 +12,13 @@ only. For every page of the book with a viewer (<figure class="motion">), offlin
   * a click on the time scrubber moves the body (the screenshot changes, the time follows);
   * and it keeps a screenshot of each viewer: <book>/screenshots/motion-<page>-<n>.png.
 
-It reports the frames per second each viewer keeps while playing (FPS lines), a measurement,
-not a check. Screenshots are pixels the compositor produced (Page.captureScreenshot), decoded
+It reports the frames per second each viewer keeps while playing (FPS lines) and each page's
+weight (WEIGHT lines: the motion data embedded, the page, the GIF fallbacks it links):
+measurements, not checks. Screenshots are pixels the compositor produced (Page.captureScreenshot), decoded
 here (zlib + PNG filters) to count the pixels that changed.
 
-    browser_motion.py <book folder> [<scratch folder>]
+    browser_motion.py [--expect N] <book folder> [<scratch folder>]
+                                   N: the viewers the chapters mark; fewer or more fails
     browser_motion.py --selftest <scratch folder>   the checks must fail on broken viewers
 
 Exit status: 0 all well; 1 a check failed; 77 no Chromium here (CTest: skipped), unless CI=true.
@@ -341,14 +343,20 @@ def check_book(exe, book, work):
         out, good = check_page(exe, book, page, work, shots)
         lines += out
         ok = ok and good
-    weight = []
+    weight, viewers = [], 0
     for page in pages:
         size = os.path.getsize(os.path.join(book, page))
         with open(os.path.join(book, page), encoding="utf-8") as h:
-            data = sum(len(m) for m in re.findall(r'<script type="application/json" class="motion-data">(.*?)</script>', h.read()))
-        weight.append("WEIGHT %s: %d bytes of motion data in a page of %d bytes" % (page, data, size))
+            html = h.read()
+        data = sum(len(m) for m in re.findall(r'<script type="application/json" class="motion-data">(.*?)</script>', html))
+        viewers += html.count('<figure class="motion"')
+        # The GIF fallbacks the page links (hidden behind the viewer, fetched only without it).
+        gifs = sorted(set(re.findall(r'src="([^"]+\.motion\.gif)"', html)))
+        gif_bytes = sum(os.path.getsize(os.path.join(book, g)) for g in gifs if os.path.exists(os.path.join(book, g)))
+        weight.append("WEIGHT %s: %d bytes of motion data in a page of %d bytes; %d GIF fallback(s) of %d bytes"
+                      % (page, data, size, len(gifs), gif_bytes))
     lines += weight
-    return lines, ok
+    return lines, ok, viewers
 
 
 # ---------------------------------------------------------------------------- self-test
@@ -430,12 +438,19 @@ def main(argv):
             return 1
         print("The motion checks pass a sound viewer and fail each viewer broken on purpose.")
         return 0
+    expect = None
+    if len(argv) >= 3 and argv[1] == "--expect":
+        expect, argv = int(argv[2]), argv[:1] + argv[3:]
     if len(argv) not in (2, 3):
         print(__doc__)
         return 2
     book = os.path.abspath(argv[1])
     work = os.path.abspath(argv[2]) if len(argv) == 3 else tempfile.mkdtemp(prefix="motion-check.")
-    lines, ok = check_book(exe, book, work)
+    lines, ok, viewers = check_book(exe, book, work)
+    if expect is not None and viewers != expect:
+        lines.append("FAIL the book has %d motion viewer(s); the chapters' sources mark %d (<!-- motion: -->)"
+                     % (viewers, expect))
+        ok = False
     print("\n".join(lines))
     return 0 if ok else 1
 
