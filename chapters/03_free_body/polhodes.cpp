@@ -51,10 +51,12 @@ void declare(kit::Options& opts, Params& p) {
 void check(const kit::Options& o, const Params& p) {
     kit::require_moments(p.I, "I", {kit::Order::distinct});  // polhodes about two axes
     // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
-    // separatrix), 3 timed runs, at the method's steps per radian for this tolerance.
+    // separatrix), 3 timed runs, at the method's steps per radian for this tolerance; with
+    // --motion, three bodies over the middle-axis period (about 50 radians each).
+    const double motion = p.motion_file.empty() ? 0.0 : 3 * 60.0;
     kit::require_budget(
-        o, {2.0 * p.curves * 3 * 12 * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples, 1.5e-6,
-            "steps", "--curves, --tol, --method, --samples"});
+        o, {(2.0 * p.curves * 3 * 12 + motion) * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples,
+            1.5e-6, "steps", "--curves, --tol, --method, --samples, --motion"});
 }
 
 using Curves = std::vector<std::vector<std::vector<double>>>;
