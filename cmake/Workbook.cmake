@@ -486,7 +486,7 @@ function(workbook_book)
            COMMAND book_tool --render "${root}" --runs "${runs}" --out "${test_book}" --pandoc "${PANDOC_EXECUTABLE}"
                    --strict --label "the committed reports (figures/)" --contents "${contents}")
   add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-           COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser")
+           COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser" "${root}/chapters")
   add_test(NAME "book: the browser checks fail on a book broken on purpose"
            COMMAND bash "${root}/cmake/book/browser_selftest.sh" "${CMAKE_BINARY_DIR}/test/browser-selftest")
   add_test(NAME "book: the motion checks fail on a viewer broken on purpose"

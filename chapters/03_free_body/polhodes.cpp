@@ -5,6 +5,9 @@
 // and compared with the exact elliptic motion. The curves Omega(t) are the polhodes: the
 // intersections of the energy ellipsoid with the ellipsoid |I Omega|^2 = M^2 (6.9). The two
 // plane ellipses through the middle axis, drawn in black, are the separatrix.
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -14,8 +17,10 @@
 #include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
+#include "motion.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/require.hpp"
+#include "rigid/rotation.hpp"
 #include "scene.hpp"
 
 using rigid::Vec3;
@@ -29,6 +34,7 @@ struct Params {
     std::string method = "rk8pd";
     double tol = 1e-12;
     int samples = 200;
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
@@ -38,16 +44,19 @@ void declare(kit::Options& opts, Params& p) {
         .choice("method", &p.method, {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams"},
                 "GSL method for the integrations (rk4 here is GSL's; the student's RK4 is in the other scenes)")
         .real("tol", &p.tol, "GSL tolerance (relative and absolute)", kit::between(1e-14, 1e-3))
-        .integer("samples", &p.samples, "output times per period", 10, 100000);
+        .integer("samples", &p.samples, "output times per period", 10, 100000)
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 void check(const kit::Options& o, const Params& p) {
     kit::require_moments(p.I, "I", {kit::Order::distinct});  // polhodes about two axes
     // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
-    // separatrix), 3 timed runs, at the method's steps per radian for this tolerance.
+    // separatrix), 3 timed runs, at the method's steps per radian for this tolerance; with
+    // --motion, three bodies over the middle-axis period (about 50 radians each).
+    const double motion = p.motion_file.empty() ? 0.0 : 3 * 60.0;
     kit::require_budget(
-        o, {2.0 * p.curves * 3 * 12 * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples, 1.5e-6,
-            "steps", "--curves, --tol, --method, --samples"});
+        o, {(2.0 * p.curves * 3 * 12 + motion) * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples,
+            1.5e-6, "steps", "--curves, --tol, --method, --samples, --motion"});
 }
 
 using Curves = std::vector<std::vector<std::vector<double>>>;
@@ -179,6 +188,64 @@ void draw(kit::Scene& scene, const Params& p, const Polhodes& r) {
     fig.finish();
 }
 
+// ------------------------------------------------------------------ the book's motion viewer
+// With --motion: three boxes with the moments I and the energy E, each started spinning about
+// one principal axis with a small component (0.05 of the spin) along the other two, integrated
+// as the polhodes are (--method, --tol) over one period of the middle-axis motion. Each lab is
+// turned so that the body's angular momentum M, fixed in space, points up.
+void write_axes_motion(kit::Scene& scene, const Params& p) {
+    if (p.motion_file.empty()) return;
+    const Vec3& I = p.I;
+    const auto axes = scene3::sorted_axes(I);
+    const char* names[] = {"smallest", "middle", "largest"};
+    std::vector<Vec3> starts;
+    for (int j = 0; j < 3; ++j) {
+        Vec3 w = Vec3::Constant(0.05);
+        w(axes[j]) = 1;
+        starts.push_back(w * std::sqrt(2 * p.energy / w.dot(I.cwiseProduct(w))));  // energy E
+    }
+    const double T = rigid::free_body_motion(I, starts[1]).period;
+    const auto times = rigid::linspace(0, T, 400);
+    std::vector<kit::Motion> bodies;
+    double err = 0;
+    for (int j = 0; j < 3; ++j) {
+        const scene3::Run run = scene3::integrate(I, starts[j], times, p.method, p.tol);
+        const auto exact = rigid::free_body_exact_rotations(rigid::free_body_motion(I, starts[j]), times);
+        const rigid::Mat3 W =
+            Eigen::Quaterniond::FromTwoVectors(I.cwiseProduct(starts[j]), Vec3::UnitZ()).toRotationMatrix();
+        kit::Motion b;
+        b.label = fmt::format("{}: spin about the {} axis", j == 0 ? "left" : j == 1 ? "middle" : "right", names[j]);
+        b.moments = I;
+        b.shape = "box";
+        b.fixed_point = Vec3(2.8 * (j - 1), 0, 0);
+        b.speed = T / 20;
+        double tilt = 0;  // the largest angle between the spin's axis and M
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            err = std::max(err, rigid::geodesic_angle(run.R[k], exact[k]));
+            b.sample(times[k], W * run.R[k]);
+            tilt = std::max(tilt, std::acos(std::clamp(b.R.back()(2, axes[j]), -1.0, 1.0)));
+        }
+        scene.report.add(fmt::format("motion_tilt_{}", names[j]), tilt * 180 / std::numbers::pi,
+                         "--motion: largest angle (degrees) between that axis and M");
+        bodies.push_back(std::move(b));
+    }
+    bodies[0].title =
+        "the free body spun about each principal axis, slightly off: smallest (left), middle, largest "
+        "(right)";
+    bodies[0].parameters = fmt::format(
+        "I = ({:g}, {:g}, {:g}), E = {:g}, each Ω(0) along its axis with 0.05 of it along the other two; "
+        "t from 0 to {:.3g}, one period of the middle-axis motion; each lab turned so that M points up",
+        I(0), I(1), I(2), p.energy, T);
+    bodies[0].error = err;
+    bodies[0].error_measure = fmt::format(
+        "max geodesic angle (rad) between the integrated R(t) ({}, tolerance {:g}) "
+        "and the exact one, over the three bodies",
+        p.method, p.tol);
+    scene.report.add("motion_period", T, "--motion: one period of the middle-axis motion");
+    scene.report.add("motion_error", err, "--motion: max geodesic angle, integrated against exact R(t), rad");
+    kit::write_motion(scene, p.motion_file, bodies);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -190,5 +257,6 @@ int main(int argc, char** argv) {
         const Polhodes r = compute(p);
         report(scene, p, r);
         draw(scene, p, r);
+        write_axes_motion(scene, p);
     });
 }

@@ -17,6 +17,9 @@
 // B Omega_B Omega_C - C Omega_C Omega_B leaves round-off of relative size eps B / A in Omega_dot_A,
 // which the step-size control then chases. --form naive shows that (the scene euler_gap_form
 // draws it against L).
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +29,7 @@
 
 #include "../05_grioli_precession/common.hpp"
 #include "common.hpp"
+#include "motion.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -51,6 +55,8 @@ struct Params {
     std::string form = "gaps";
     long periods = 100;
     double tol = 1e-13;
+    double off = 0.1;         // --motion: how far the second body's line leaves the Grioli line
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
@@ -65,7 +71,11 @@ void declare(kit::Options& opts, Params& p) {
         .choice("form", &p.form, {"gaps", "naive"},
                 "Euler's equations on the moment gaps, or the naive form (J Omega) x Omega of Chapter 4")
         .integer("periods", &p.periods, "periods 2 pi / alpha to integrate", 1, 100000)
-        .real("tol", &p.tol, "rk8pd relative tolerance", kit::between(1e-15, 1e-2));
+        .real("tol", &p.tol, "rk8pd relative tolerance", kit::between(1e-15, 1e-2))
+        .real("off", &p.off,
+              "with --motion: the angle (rad) by which the second body's line OG leaves the Grioli line, towards x_A",
+              kit::between(1e-3, 0.5))
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 void check(const kit::Options& o, const Params& p) {
@@ -202,6 +212,97 @@ void report(kit::Scene& scene, const Params& p, const Hung& h, const Integration
     scene.report.add("period", h.period);
 }
 
+// ------------------------------------------------------------------ the book's motion viewer
+// With --motion: three periods of the body hung on the line (the equations above, integrated
+// from Theorem 1's initial state), beside the same body hung at the same L on a line turned by
+// --off towards x_A, started in the state Theorem 1 gives for its own moments there, and
+// integrated with its own equations. Each R(t) is drawn in the body's frame at G (its moments
+// A_g, B_g, C_g), the lab turned so that k is up.
+
+// One body at O, as the integration sees it: its moments and frame at O, Theorem 1's precession
+// for them, and its own equations.
+struct AtO {
+    rigid::Moments m;
+    Mat3 Q;   // the principal frame at O (columns, in the G-frame), oriented as Theorem 1 places it
+    Vec3 z0;  // O -> G in that frame
+    rigid::GrioliPrecession P;
+    rigid::OdeRhs rhs;
+};
+
+AtO hang_off(const Params& p, const Hung& on) {
+    const rigid::BodyAtG body = ch6::body(p.body);
+    const Vec3 z = rigid::shift_direction(std::atan2(on.s.z.z(), on.s.z.x()) - p.line * p.off);
+    const rigid::PrincipalFrame fr = rigid::principal_frame(body, p.L, z);
+    AtO b;
+    b.m = rigid::moments_from_gaps(fr.moments.A, fr.moments.B_minus_A, fr.moments.C_minus_B);
+    b.P = rigid::grioli_precession(b.m, on.f, on.P.sense);
+    // The same choice of half-turns as on the line: G on the side of +a.
+    const Vec3 g0 = fr.R.transpose() * -z;
+    const double dA = g0.x() * b.P.z0.x() >= 0 ? 1 : -1, dC = g0.z() * b.P.z0.z() >= 0 ? 1 : -1;
+    b.Q = fr.R * Vec3(dA, dA * dC, dC).asDiagonal();
+    b.z0 = (b.Q.transpose() * -z).normalized();
+    const rigid::Moments m = b.m;
+    const double f = on.f;
+    const Vec3 k = b.P.k, z0 = b.z0;
+    b.rhs = [=](double, const rigid::VecX& y) {
+        return rigid::pack(rigid::euler_poisson_rhs_gaps(m, f, k, z0, rigid::unpack(y)));
+    };
+    return b;
+}
+
+// R(t) of the body integrated from Theorem 1's initial state (rk8pd at --tol, as above), its
+// largest and its last geodesic angle from R^b(alpha t) R^a(alpha t), and the motion drawn.
+kit::Motion play(const Params& p, const AtO& b, const Vec3& G_from_O, const std::vector<double>& times, double& max_dev,
+                 double& end_dev) {
+    const rigid::BodyAtG body = ch6::body(p.body);
+    kit::Motion mo;
+    mo.moments = {body.A_g, body.B_g, body.C_g};
+    // The uniform ellipsoid with these moments and mass: its largest half-axis is the viewer's unit.
+    const double a2 = 2.5 / body.mu * (body.B_g + body.C_g - body.A_g);
+    mo.centre_of_mass = G_from_O / std::sqrt(a2);
+    const Mat3 W = Eigen::Quaterniond::FromTwoVectors(b.P.k, Vec3::UnitZ()).toRotationMatrix();
+    max_dev = 0;
+    rigid::integrate_gsl(b.rhs, rigid::pack(rigid::grioli_initial_state(b.P)), times,
+                         [&](double t, const rigid::VecX& y) {
+                             const Mat3 R = rigid::unpack(y).R;
+                             end_dev = rigid::geodesic_angle(R, rigid::grioli_rotation(b.P, t));
+                             max_dev = std::max(max_dev, end_dev);
+                             mo.sample(t, W * R * b.Q.transpose());
+                         },
+                         {.method = "rk8pd", .rel_tol = p.tol, .abs_tol = p.tol * std::min(1.0, b.P.alpha)});
+    return mo;
+}
+
+void write_hung_motions(kit::Scene& scene, const Params& p, const Hung& h) {
+    if (p.motion_file.empty()) return;
+    const AtO on{h.m, h.Q, h.z0, h.P, h.rhs}, off = hang_off(p, h);
+    const auto times = rigid::linspace(0, 3 * h.period, 180);
+    double on_max = 0, on_end = 0, off_max = 0, off_end = 0;
+    kit::Motion a = play(p, on, -h.s.z * p.L, times, on_max, on_end);
+    const Vec3 z_off = rigid::shift_direction(std::atan2(h.s.z.z(), h.s.z.x()) - p.line * p.off);
+    kit::Motion b = play(p, off, -z_off * p.L, times, off_max, off_end);
+    a.label = "left: hung on the Grioli line";
+    b.label = fmt::format("right: hung {:g} rad off the line", p.off);
+    a.title =
+        "the same body hung at the same L on a Grioli line (left) and off it (right), each started as Theorem 1 "
+        "says for its moments at O";
+    a.parameters = fmt::format(
+        "A_g = {:g}, B_g = {:g}, C_g = {:g}, μ = {:g}, g = {:g}, L = {:g}, line {:+d}, {}; "
+        "three periods 2π/α = {:.3g}; off the line: the line turned by {:g} rad towards x_A, "
+        "its largest angle from Theorem 1's R(t) {:.2g} rad",
+        p.body.A_g, p.body.B_g, p.body.C_g, p.body.mu, p.g, p.L, p.line, p.sense, h.period, p.off, off_max);
+    a.error = on_max;
+    a.error_measure = "on the line: max geodesic angle (rad) between the integrated R(t) and Theorem 1's";
+    a.fixed_point = Vec3(-1.5, 0, 0);
+    b.fixed_point = Vec3(1.5, 0, 0);
+    a.speed = b.speed = h.period / 4;
+    scene.report.add("motion_off_angle", p.off, "--off: the second body's line from the Grioli line, rad");
+    scene.report.add("motion_on_line_max_angle", on_max, "--motion, three periods: on the line, rad");
+    scene.report.add("motion_off_line_max_angle", off_max, "--motion, three periods: off the line by --off, rad");
+    scene.report.add("motion_off_line_end_angle", off_end, "the same after three periods, rad");
+    kit::write_motion(scene, p.motion_file, std::vector<kit::Motion>{a, b});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -214,5 +315,6 @@ int main(int argc, char** argv) {
         check(o, p);
         const Hung h = hang(p);
         report(scene, p, h, integrate(o, p, h));
+        write_hung_motions(scene, p, h);
     });
 }

@@ -10,6 +10,9 @@
 // state changed by delta = 1e-8 ... 1e-4, follow the deviation for hundreds of periods, and
 // measure its growth: a power of t, or an exponential, whose rate is read over a window of
 // 100 periods once the transient has passed.
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -21,6 +24,7 @@
 
 #include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
+#include "motion.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -147,12 +151,16 @@ std::pair<double, double> line_fit(const std::vector<double>& x, const std::vect
 // delta * alpha * (0.48, -0.6, 0.64), integrated by rk8pd; the deviation from the precession at
 // every whole period kP, where the precession is back at R = 1, Omega = Omega(0):
 //   d_k = angle(R(kP)) + |Omega(kP) - Omega(0)| / alpha.
+BodyState perturbed_start(const rigid::GrioliPrecession& g, double delta) {
+    BodyState start = rigid::grioli_initial_state(g);
+    start.Omega += delta * g.alpha * Vec3(0.48, -0.6, 0.64);
+    return start;
+}
+
 Growth perturbation(const rigid::Moments& m, double delta, int periods, double tol) {
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
     const rigid::HeavyTop top = rigid::grioli_top(m, g);
-    const BodyState s0 = rigid::grioli_initial_state(g);
-    BodyState start = s0;
-    start.Omega += delta * g.alpha * Vec3(0.48, -0.6, 0.64);
+    const BodyState start = perturbed_start(g, delta);
     const double P = 2 * pi / g.alpha;
     Growth gr;
     const rigid::OdeRhs rhs = [&](double, const VecX& y) {
@@ -200,13 +208,15 @@ Growth perturbation(const rigid::Moments& m, double delta, int periods, double t
 struct Params {
     long nu = 60, nv = 40, periods = 1500;
     double tol = 1e-11;
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
     opts.integer("nu", &p.nu, "grid points along u = (B - A)/(C - A)", 4, 400)
         .integer("nv", &p.nv, "grid points along v = (C - A)/B", 4, 400)
         .integer("periods", &p.periods, "periods followed after a perturbation", 20, 100000)
-        .real("tol", &p.tol, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6));
+        .real("tol", &p.tol, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6))
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 // (1) The map of the largest multiplier over the shapes, and its edges: the flat bodies (v = 1)
@@ -466,6 +476,74 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
     }
 }
 
+// ------------------------------------------------------------------ the book's motion viewer
+// With --motion: the body in the tongue, started delta = 1e-4 off its precession (as the
+// perturbed runs above) and integrated over 30 periods (left), beside Theorem 1's precession
+// itself (right), k up. The deviation d of the perturbed runs, at whole periods, goes to the
+// report and the caption; the same integration started on the precession (delta = 0) measures
+// how much of what the reader sees is the integrator's own.
+void write_tongue_motion(kit::Scene& scene, const std::string& file, const rigid::Moments& m, double tol) {
+    if (file.empty()) return;
+    const double delta = 1e-4;
+    const int periods = 30, per_period = 16;
+    const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, rigid::Sense::ccw);
+    const rigid::HeavyTop top = rigid::grioli_top(m, g);
+    const rigid::OdeRhs rhs = [&](double, const VecX& y) {
+        return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
+    };
+    const double P = 2 * pi / g.alpha;
+    const auto times = rigid::linspace(0, periods * P, periods * per_period);
+    const rigid::Mat3 W = Eigen::Quaterniond::FromTwoVectors(g.k, Vec3::UnitZ()).toRotationMatrix();
+    kit::Motion run, exact;
+    std::vector<double> d;  // at whole periods
+    double unperturbed = 0;
+    for (const double dl : {delta, 0.0}) {
+        std::size_t k = 0;
+        rigid::integrate_gsl(rhs, rigid::pack(perturbed_start(g, dl)), times,
+                             [&](double t, const VecX& y) {
+                                 const BodyState s = rigid::unpack(y);
+                                 const double dev = rigid::geodesic_angle(rigid::grioli_rotation(g, t), s.R) +
+                                                    (s.Omega - rigid::grioli_angular_velocity(g, t)).norm() / g.alpha;
+                                 if (dl == 0) {
+                                     unperturbed = std::max(unperturbed, dev);
+                                 } else {
+                                     run.sample(t, W * s.R);
+                                     exact.sample(t, W * rigid::grioli_rotation(g, t));
+                                     if (k % per_period == 0) d.push_back(dev);
+                                 }
+                                 ++k;
+                             },
+                             {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+    }
+    for (kit::Motion* b : {&run, &exact}) {
+        b->moments = {m.A, m.B, m.C};
+        b->size = 0.55;
+        b->centre_of_mass = g.z0;
+        b->speed = P / 1.2;
+    }
+    run.fixed_point = Vec3(-1.7, 0, 0);
+    exact.fixed_point = Vec3(1.7, 0, 0);
+    run.label = fmt::format("left: started δ = {:g} off the precession (Ω(0) changed), integrated", delta);
+    exact.label = "right: Theorem 1's precession R^b(αt) R^a(αt), exact";
+    run.title =
+        "a Grioli precession inside the instability tongue: the perturbed body (left) leaves the precession "
+        "(right)";
+    run.parameters = fmt::format(
+        "A = {:.4g}, B = {:.4g}, C = {:.4g}, f = 1, counter-clockwise; {} periods 2π/α; "
+        "deviation d = angle(R, R_exact) + |Ω − Ω_exact|/α: {:.1e} at t = 0, {:.1e} after 10 "
+        "periods, {:.2g} after {}",
+        m.A, m.B, m.C, periods, d.front(), d[10], d.back(), periods);
+    run.error = unperturbed;
+    run.error_measure = "the same integration started on the precession (δ = 0): its largest d over the 30 periods";
+    scene.report.add("motion_delta", delta, "--motion: the change of Omega(0), as the perturbed runs");
+    scene.report.add("motion_periods", static_cast<long>(periods));
+    scene.report.add("motion_deviation_start", d.front(), "--motion: d at t = 0");
+    scene.report.add("motion_deviation_10", d[10], "--motion: d after 10 periods");
+    scene.report.add("motion_deviation_end", d.back(), "--motion: d after motion_periods periods");
+    scene.report.add("motion_unperturbed", unperturbed, "--motion: largest d of the run with delta = 0");
+    kit::write_motion(scene, file, std::vector<kit::Motion>{run, exact});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -485,5 +563,6 @@ int main(int argc, char** argv) {
         report(scene.report, nu, nv, periods, map, tongue, checks, perturbed);
         draw_map(scene, map, perturbed);
         draw_perturbations(scene, perturbed);
+        write_tongue_motion(scene, p.motion_file, tongue, p.tol);
     });
 }

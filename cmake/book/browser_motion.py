@@ -12,12 +12,15 @@ only. For every page of the book with a viewer (<figure class="motion">), offlin
   * a click on the time scrubber moves the body (the screenshot changes, the time follows);
   * and it keeps a screenshot of each viewer: <book>/screenshots/motion-<page>-<n>.png.
 
-It reports the frames per second each viewer keeps while playing (FPS lines), a measurement,
-not a check. Screenshots are pixels the compositor produced (Page.captureScreenshot), decoded
+It reports the frames per second each viewer keeps while playing (FPS lines) and each page's
+weight (WEIGHT lines: the motion data embedded, the page, the GIF fallbacks it links):
+measurements, not checks. Screenshots are pixels the compositor produced (Page.captureScreenshot), decoded
 here (zlib + PNG filters) to count the pixels that changed.
 
-    browser_motion.py <book folder> [<scratch folder>]
-    browser_motion.py --selftest <scratch folder>   the checks must fail on broken viewers
+    browser_motion.py [--expect N] <book folder> [<scratch folder>]
+                                   N: the viewers the chapters mark; fewer or more fails
+    browser_motion.py --selftest <scratch folder>   the checks must fail on broken viewers (and on a
+                                                    book that lost a viewer its chapters mark)
 
 Exit status: 0 all well; 1 a check failed; 77 no Chromium here (CTest: skipped), unless CI=true.
 """
@@ -331,7 +334,7 @@ def pages_with_viewers(book):
     return pages
 
 
-def check_book(exe, book, work):
+def check_book(exe, book, work, expect=None):
     shots = os.path.join(book, "screenshots")
     os.makedirs(shots, exist_ok=True)
     os.makedirs(work, exist_ok=True)
@@ -341,13 +344,23 @@ def check_book(exe, book, work):
         out, good = check_page(exe, book, page, work, shots)
         lines += out
         ok = ok and good
-    weight = []
+    weight, viewers = [], 0
     for page in pages:
         size = os.path.getsize(os.path.join(book, page))
         with open(os.path.join(book, page), encoding="utf-8") as h:
-            data = sum(len(m) for m in re.findall(r'<script type="application/json" class="motion-data">(.*?)</script>', h.read()))
-        weight.append("WEIGHT %s: %d bytes of motion data in a page of %d bytes" % (page, data, size))
+            html = h.read()
+        data = sum(len(m) for m in re.findall(r'<script type="application/json" class="motion-data">(.*?)</script>', html))
+        viewers += html.count('<figure class="motion"')
+        # The GIF fallbacks the page links (hidden behind the viewer, fetched only without it).
+        gifs = sorted(set(re.findall(r'src="([^"]+\.motion\.gif)"', html)))
+        gif_bytes = sum(os.path.getsize(os.path.join(book, g)) for g in gifs if os.path.exists(os.path.join(book, g)))
+        weight.append("WEIGHT %s: %d bytes of motion data in a page of %d bytes; %d GIF fallback(s) of %d bytes"
+                      % (page, data, size, len(gifs), gif_bytes))
     lines += weight
+    if expect is not None and viewers != expect:
+        lines.append("FAIL the book has %d motion viewer(s); the chapters' sources mark %d (<!-- motion: -->)"
+                     % (viewers, expect))
+        ok = False
     return lines, ok
 
 
@@ -383,10 +396,11 @@ def selftest(exe, work):
         "scrubber": (viewer.replace("this.seek(t0 + (t1 - t0) * scrub.value / 1000);", ""), r"a click at 3/4 of the scrubber"),
         "blank": (viewer.replace("this.renderer.render(this.scene, this.camera);", ""), r"the canvas is blank"),
         "no-three": (viewer, r"did not start|browser error|uncaught exception"),
+        "dropped": (viewer, r"the book has 1 motion viewer\(s\); the chapters' sources mark 2"),
     }
     lines, missed = [], []
     for name, (script, expect) in broken.items():
-        if name != "sound" and script == viewer and name != "no-three":
+        if name != "sound" and script == viewer and name not in ("no-three", "dropped"):
             missed.append("%s: motion_viewer.js no longer has the line this self-test breaks" % name)
             continue
         book = os.path.join(work, name)
@@ -403,7 +417,8 @@ def selftest(exe, work):
                     '<figcaption>Motion</figcaption></figure></main></body></html>' % (name, json.dumps(motion)))
         with open(os.path.join(book, "pages.txt"), "w") as f:
             f.write("page.html\tpage\t%s\n" % name)
-        out, ok = check_book(exe, book, os.path.join(work, name + "-scratch"))
+        # "dropped": a sound viewer, but the chapters mark two (the renderer lost one).
+        out, ok = check_book(exe, book, os.path.join(work, name + "-scratch"), 2 if name == "dropped" else None)
         lines += ["[%s] %s" % (name, l) for l in out]
         text = "\n".join(out)
         if expect is None:
@@ -430,12 +445,15 @@ def main(argv):
             return 1
         print("The motion checks pass a sound viewer and fail each viewer broken on purpose.")
         return 0
+    expect = None
+    if len(argv) >= 3 and argv[1] == "--expect":
+        expect, argv = int(argv[2]), argv[:1] + argv[3:]
     if len(argv) not in (2, 3):
         print(__doc__)
         return 2
     book = os.path.abspath(argv[1])
     work = os.path.abspath(argv[2]) if len(argv) == 3 else tempfile.mkdtemp(prefix="motion-check.")
-    lines, ok = check_book(exe, book, work)
+    lines, ok = check_book(exe, book, work, expect)
     print("\n".join(lines))
     return 0 if ok else 1
 

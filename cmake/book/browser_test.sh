@@ -7,7 +7,10 @@
 # them), and checks that each is as tall as its page; then the motion viewers, in
 # cmake/book/browser_motion.py.
 #
-#   cmake/book/browser_test.sh <book folder> <scratch folder>
+#   cmake/book/browser_test.sh <book folder> <scratch folder> [<chapters folder>]
+#
+# With the chapters' sources (<root>/chapters), every motion viewer they mark (a line
+# <!-- motion: ... -->) must be in the book and pass: a viewer the renderer dropped fails.
 #
 # Exit status 0 when all is well, 1 on a problem, 77 (CTest: skipped) when no Chromium is
 # installed and CI is not set. `cmake/workbook test` installs Chromium (Debian: chromium).
@@ -15,6 +18,7 @@ set -euo pipefail
 
 book=$(cd "$1" && pwd)
 work=$2
+chapters=${3:-}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
 browser=""
@@ -122,7 +126,10 @@ done <"$book/pages.txt"
 # The motion viewers (cmake/book/browser_motion.py): each page with one, driven over the DevTools
 # protocol: no console error, a canvas that is not blank, that moves while playing and holds
 # still when paused, a scrubber that moves the body; a screenshot of each viewer.
-if grep -lq 'class="motion"' "$book"/*.html 2>/dev/null; then
+if [[ -n $chapters ]]; then
+  markers=$(cat "$chapters"/*/*.md | grep -c '^<!-- motion: ' || true)
+  python3 "$here/browser_motion.py" --expect "$markers" "$book" "$work/motion" || status=1
+elif grep -lq 'class="motion"' "$book"/*.html 2>/dev/null; then
   python3 "$here/browser_motion.py" "$book" "$work/motion" || status=1
 fi
 exit $status
