@@ -785,7 +785,9 @@ std::vector<Vec3> bad_directions() {
 }
 std::vector<Vec3> edge_directions() {
     const Vec3 z = z_plane;
-    return {(1 + 0.5e-12) * z, (1 - 0.5e-12) * z, Vec3(z.x(), 0.5e-12, z.z())};
+    // z_B exactly 1e-12 is still within 1e-12 (the rule is inclusive).
+    return {(1 + 0.5e-12) * z, (1 - 0.5e-12) * z, Vec3(z.x(), 0.5e-12, z.z()), Vec3(z.x(), 1e-12, z.z()),
+            Vec3(z.x(), -1e-12, z.z())};
 }
 const double bad_L[] = {0.0, -0.0, -tiny_, inf_, -inf_, nan_};
 
