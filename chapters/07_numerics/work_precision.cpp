@@ -306,7 +306,7 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
 // number per step), over the runs whose error lies
 // between 1e3 times the scenario's double-precision floor and 1e-3 (clear of the floor and of the
 // first, coarsest steps). A method of order p has slope -p against steps (or evaluations); against run time the
-// same, as far as the time is proportional to the steps. Fewer than three runs there: no slope.
+// same, as far as the time is proportional to the steps. Fewer than three runs there: NaN.
 void report_slopes(kit::Scene& scene, const Sweeps& w) {
     auto fit = [](const std::vector<double>& x, const std::vector<double>& y) {
         double mx = 0, my = 0;
@@ -324,11 +324,12 @@ void report_slopes(kit::Scene& scene, const Sweeps& w) {
                 if (!pt.failed && pt.m.error < 1e-3 && pt.m.error > 1e3 * floor && pt.time_s > 0 && pt.evaluations > 0)
                     lt.push_back(std::log10(pt.time_s)), ls.push_back(std::log10(double(pt.evaluations))),
                         le.push_back(std::log10(pt.m.error));
-            if (lt.size() < 3) continue;
+            // Too few runs in that band (a light sweep): the keys are still there, not measured.
+            const bool few = lt.size() < 3;
             const std::string k = sc.name + "_" + m.name + "_slope_";
-            scene.report.add(k + "time", fit(lt, le),
+            scene.report.add(k + "time", few ? nan_ : fit(lt, le),
                              "d log10(error) / d log10(run time), errors in (1e3 floor, 1e-3)");
-            scene.report.add(k + "evaluations", fit(ls, le),
+            scene.report.add(k + "evaluations", few ? nan_ : fit(ls, le),
                              "d log10(error) / d log10(evaluations of the equations, proportional to the steps), "
                              "the same runs");
         }
