@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <functional>
 #include <map>
 
 #include "grading.hpp"
@@ -89,6 +90,32 @@ struct Args {
     Options options;
 };
 
+// The limits and the mutation gate's options (Options, grading.hpp); false for any other option.
+bool limit_option(const std::string& o, const std::function<std::string()>& take, Options& options) {
+    if (o == "--timeout")
+        options.test_limits.wall_seconds = number(o, take().c_str());
+    else if (o == "--memory")
+        options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+    else if (o == "--output-limit")
+        options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+    else if (o == "--build-timeout")
+        options.build_limits.wall_seconds = number(o, take().c_str());
+    else if (o == "--build-memory")
+        options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
+    else if (o == "--max-file-size")
+        options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+    else if (o == "--test-env") {
+        const std::string e = take();
+        if (e.find('=') == std::string::npos || e.front() == '=')
+            std::fprintf(stderr, "workbook_grade: --test-env needs NAME=VALUE, not '%s'\n", e.c_str()), std::exit(2);
+        options.test_environment.push_back(e);
+    } else if (o == "--object-cache")
+        options.object_cache = take();
+    else
+        return false;
+    return true;
+}
+
 Args parse(int argc, char** argv) {
     Args a;
     for (int i = 2; i < argc; ++i) {
@@ -116,18 +143,6 @@ Args parse(int argc, char** argv) {
             a.jobs = static_cast<int>(number(o, take().c_str()));
         else if (starts_with(o, "-j") && o.size() > 2)
             a.jobs = static_cast<int>(number("-j", o.c_str() + 2));
-        else if (o == "--timeout")
-            a.options.test_limits.wall_seconds = number(o, take().c_str());
-        else if (o == "--memory")
-            a.options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-        else if (o == "--output-limit")
-            a.options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-        else if (o == "--build-timeout")
-            a.options.build_limits.wall_seconds = number(o, take().c_str());
-        else if (o == "--build-memory")
-            a.options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-        else if (o == "--max-file-size")
-            a.options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
         else if (o == "--only")
             a.only.push_back(take());
         else if (o == "--assignment")
@@ -136,14 +151,8 @@ Args parse(int argc, char** argv) {
             a.force = true;
         else if (o == "--keep-work")
             a.options.keep_work = true;
-        else if (o == "--test-env") {
-            const std::string e = take();
-            if (e.find('=') == std::string::npos || e.front() == '=')
-                std::fprintf(stderr, "workbook_grade: --test-env needs NAME=VALUE, not '%s'\n", e.c_str()),
-                    std::exit(2);
-            a.options.test_environment.push_back(e);
-        } else if (o == "--object-cache")
-            a.options.object_cache = take();
+        else if (limit_option(o, take, a.options))
+            continue;
         else if (o == "-h" || o == "--help")
             std::printf("%s", usage), std::exit(0);
         else if (starts_with(o, "-") && o.size() > 1)
