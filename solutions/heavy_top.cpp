@@ -66,8 +66,8 @@ struct Decoded {
 Decoded decode(const PrecessionSearch& S, const double* x) {
     const Mat3 Q = rotation_from_vector(Vec3(x[0], x[1], x[2]));
     Decoded d;
-    d.top.J = Q * S.moments.asDiagonal() * Q.transpose();
-    d.top.J = 0.5 * (d.top.J + d.top.J.transpose());
+    const Mat3 J = Q * S.moments.asDiagonal() * Q.transpose();
+    d.top.J = 0.5 * (J + J.transpose());  // into another matrix: J = 0.5 (J + J^T) in place aliases
     d.top.f = 1.0;
     d.top.z0 = unit_from_angles(x[3], x[4]);
     const double s = std::exp(std::clamp(x[5], -60.0, 60.0));

@@ -32,8 +32,9 @@ struct HeavyTop {
     Vec3 z0;   // unit vector from O to the centre of mass at t = 0 (body = lab at t = 0)
 };
 
-// Checks and normalises: J symmetric to 1e-12 relative and positive definite, f finite and
-// > 0, k and z0 finite and non-zero (returned as unit vectors). Throws std::invalid_argument.
+// Checks and normalises: J symmetric (|J_ij - J_ji| <= 1e-12 times the largest |J_kl|) and
+// positive definite, f finite and > 0, k and z0 finite and non-zero (returned as unit
+// vectors). Throws std::invalid_argument.
 HeavyTop heavy_top(const Mat3& J, double f, const Vec3& k, const Vec3& z0);
 // end snippet
 
@@ -153,6 +154,8 @@ struct PrecessionSearch {
     unsigned seed = 1;
 };
 
+// top.J is symmetric bit for bit (J_ij == J_ji): a product Q D Q^T is symmetric only to
+// rounding, so average it with its transpose.
 struct PrecessionFit {
     double residual;             // the smallest precession_residual found
     HeavyTop top;                // the body at the minimum: J in the [P, (3.3)] frame, f = 1, k, z0
