@@ -51,12 +51,16 @@ double energy_rate(const Oscillator& osc, const LevelFriction& k, double q, doub
 Vec3 spin_rhs(const SpinField& field, const Vec3& S) {
     require_spin_field(field);
     const Vec3& B = field.B;
-    const double S2 = S.squaredNorm();
     const Vec3 precession = -field.e_over_mc * B.cross(S);
-    if (S2 == 0) return precession;  // zero as well
-    // S^ x (B^ x S^) = (B - S (S.B) / |S|^2) / |B|: the part of B^ across S.
-    const double BS = B.dot(S);
-    return precession + (field.beta * BS / B.norm()) * (B - S * (BS / S2));
+    // Sizes by stableNorm and directions from them: |S|^2 of a spin below 1e-154 would underflow
+    // to 0 (and above 1e154 overflow), and (6.2) is homogeneous, of degree 1 in S and in B.
+    const double size = S.stableNorm();
+    if (size == 0) return precession;  // zero as well
+    const double field_size = B.stableNorm();
+    const Vec3 s = S / size, b = B / field_size;
+    // beta (B.S) s x (b x s) = beta |B| |S| (s.b) (b - s (s.b)): the part of b across s.
+    const double c = s.dot(b);
+    return precession + (field.beta * field_size * size * c) * (b - c * s);
 }
 
 OdeRhs spin_equations(const SpinField& field) {
@@ -69,11 +73,11 @@ OdeRhs spin_equations(const SpinField& field) {
 
 double spin_projection_rate(const SpinField& field, const Vec3& S) {
     require_spin_field(field);
-    const double S2 = S.squaredNorm();
-    if (S2 == 0) return 0;
-    const double B = field.B.norm(), c = S.dot(field.B) / B;  // S . B^
-    const double sin2 = S.cross(field.B).squaredNorm() / (S2 * B * B);
-    return field.beta * B * c * sin2;
+    const double size = S.stableNorm();  // not |S|^2, which underflows below 1e-154
+    if (size == 0) return 0;
+    const double B = field.B.stableNorm();
+    const Vec3 s = S / size, b = field.B / B;
+    return field.beta * B * size * s.dot(b) * s.cross(b).squaredNorm();
 }
 
 double spin_angle(const Vec3& B, const Vec3& S) {
@@ -88,8 +92,9 @@ double spin_angle(const Vec3& B, const Vec3& S) {
 // sin and cos from the unit vectors (a cross and a dot product), accurate at every angle.
 double spin_angle_rate(const SpinField& field, const Vec3& S) {
     require_spin_field(field);
-    const Vec3 s = require_axis(S, "the spin S"), b = field.B.normalized();
-    return -field.beta * field.B.norm() * s.cross(b).norm() * s.dot(b);
+    const double B = field.B.stableNorm();  // not norm(), whose square underflows below 1e-154
+    const Vec3 s = require_axis(S, "the spin S"), b = field.B / B;
+    return -field.beta * B * s.cross(b).norm() * s.dot(b);
 }
 
 Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) {
@@ -98,16 +103,17 @@ Vec3 spin_exact(const SpinField& field, const Vec3& S0, double t) {
     require_finite(t, "the time t");
     if (!S0.allFinite())
         throw std::invalid_argument("the initial spin S0 must be a finite vector, got " + describe(S0));
-    const double size = S0.norm();
+    const double size = S0.stableNorm();  // not norm(), whose square underflows below 1e-154
     if (size == 0) return S0;
-    const double B = field.B.norm();
-    const Vec3 par = S0.dot(b) * b, perp = S0 - par;
+    const double B = field.B.stableNorm();
+    const Vec3 u = S0 / size, par = u.dot(b) * b, perp = u - par;
     // In the frame turning with the precession, S moves in the plane of B and S0 only, with
     // tan(theta) = tan(theta0) exp(-x). Scaled so that exp never overflows.
     const double x = field.beta * B * t;
     Vec3 d = x >= 0 ? Vec3(par + std::exp(-x) * perp) : Vec3(std::exp(x) * par + perp);
-    if (par.squaredNorm() == 0) d = perp;  // exactly 90 degrees: an equilibrium of the angle
-    return rotation_about(b, -field.e_over_mc * B * t) * (size * d.normalized());
+    if (u.dot(b) == 0) d = perp;                   // exactly 90 degrees: an equilibrium of the angle
+    if (perp.cwiseAbs().maxCoeff() == 0) d = par;  // exactly 0 or 180 degrees: one as well
+    return rotation_about(b, -field.e_over_mc * B * t) * (size * (d / d.stableNorm()));
 }
 
 }  // namespace rigid

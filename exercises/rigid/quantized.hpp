@@ -10,7 +10,10 @@
 //     positive between them, so the energy never rises. p = 2 is smooth (a double zero at each
 //     level); p = 1 has a kink there.
 //   * The spin (6.2): dS/dt = -(e/mc) [B, S] + beta (B, S) [S^, [B^, S^]] with [a, b] = a x b and
-//     the hats unit vectors. Its state is y = S (3 numbers).
+//     the hats unit vectors. Its state is y = S (3 numbers). (6.2) is homogeneous, of degree 1
+//     in S and in B, and the spin functions below keep that for sizes from 1e-300 to 1e300: a
+//     size taken as sqrt(|S|^2) is 0 below 1e-154 and infinite above 1e154 (Eigen's stableNorm
+//     is not; unit vectors then keep the rest in range).
 //   * Bad input throws std::invalid_argument naming the rule (the require_* functions below):
 //     m, omega, kappa, E0 finite and > 0; p finite and >= 1; B finite and non-zero; e/mc
 //     finite, of either sign (the sign of the charge); beta finite and >= 0.
