@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -88,8 +89,11 @@ constexpr uid_t nobody = 65534;
 const char* const bwrap = "/usr/bin/bwrap";
 const char* const prlimit = "/usr/bin/prlimit";
 
-// Everything the sandboxed program sees, after the bubblewrap path.
-std::vector<std::string> bwrap_arguments(const std::string& name, long tmp_bytes) {
+// Everything the sandboxed program sees, after the bubblewrap path. The output limit is set
+// inside, by prlimit: bubblewrap writes the test binary into the sandbox (--ro-bind-data), and
+// that write must not count against what the test may write (a binary over the limit would
+// otherwise fail every test with "File too large").
+std::vector<std::string> bwrap_arguments(const std::string& name, long tmp_bytes, long output_bytes) {
     std::vector<std::string> a = {bwrap,
                                   "--unshare-all",
                                   "--die-with-parent",
@@ -123,7 +127,10 @@ std::vector<std::string> bwrap_arguments(const std::string& name, long tmp_bytes
                                   "--ro-bind-data",
                                   "4",
                                   "/run/test/" + name};
-    if (access(prlimit, X_OK) == 0) a.insert(a.end(), {prlimit, "--nproc=0:0", "--core=0:0"});
+    if (access(prlimit, X_OK) == 0) {
+        const std::string fsize = std::to_string(output_bytes);
+        a.insert(a.end(), {prlimit, "--nproc=0:0", "--core=0:0", "--fsize=" + fsize + ":" + fsize});
+    }
     return a;
 }
 
@@ -205,17 +212,21 @@ std::string prepare_launch(const std::vector<std::string>& argv, const std::stri
                            Launch& l) {
     l.namespaces = limits.isolate && mode == Isolation::namespaces;
     l.as_nobody = limits.isolate && mode != Isolation::limits_only && geteuid() == 0;
-    if (l.namespaces) {
-        const std::string name = argv[0].substr(argv[0].rfind('/') + 1);
-        l.command = bwrap_arguments(name, std::max<long>(limits.output_bytes * 4, 8L << 20));
-        l.command.push_back("/run/test/" + name);
-        l.command.insert(l.command.end(), argv.begin() + 1, argv.end());
-    } else {
-        l.command = argv;
-    }
     if (l.namespaces || l.as_nobody) {
         l.program = open(argv[0].c_str(), O_RDONLY | O_CLOEXEC);
         if (l.program < 0) return "cannot open " + argv[0] + ": " + std::strerror(errno);
+    }
+    l.output = static_cast<rlim_t>(limits.output_bytes);
+    if (l.namespaces) {
+        const std::string name = argv[0].substr(argv[0].rfind('/') + 1);
+        l.command = bwrap_arguments(name, std::max<long>(limits.output_bytes * 4, 8L << 20), limits.output_bytes);
+        l.command.push_back("/run/test/" + name);
+        l.command.insert(l.command.end(), argv.begin() + 1, argv.end());
+        // Outside, the limit must let bubblewrap write the binary; inside, prlimit sets the real one.
+        struct stat st {};
+        if (fstat(l.program, &st) == 0) l.output = std::max(l.output, static_cast<rlim_t>(st.st_size) + (64 << 10));
+    } else {
+        l.command = argv;
     }
     for (const auto& a : l.command) l.args.push_back(const_cast<char*>(a.c_str()));
     l.args.push_back(nullptr);
@@ -228,7 +239,6 @@ std::string prepare_launch(const std::vector<std::string>& argv, const std::stri
     l.env.push_back(nullptr);
     l.cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
     l.memory = static_cast<rlim_t>(limits.memory_mb) << 20;
-    l.output = static_cast<rlim_t>(limits.output_bytes);
     return {};
 }
 
