@@ -1,5 +1,5 @@
 # Short functions in the workbook's own tools: no function in cmake/tools/ or tests/grading/ (the
-# book tool, the snippet checker, the grading run and its record and replay) is longer than LINES
+# book tool, the snippet checker, the grading run and its judge and student side) is longer than LINES
 # lines, by clang-tidy's readability-function-size (its LineThreshold counts the lines of the body);
 # and no scene's main (chapters/*/*.cpp) is either: a scene reads as named steps (parse, compute,
 # report, draw), each a function of its own.
@@ -67,7 +67,7 @@ endif()
 # that is short now fails the test until it is taken off). Empty: every function is short.
 set(known_long)
 
-file(GLOB files "${ROOT}/cmake/tools/*.cpp" "${ROOT}/tests/grading/*.cpp" "${ROOT}/tests/grading/replay/*.cpp")
+file(GLOB files "${ROOT}/cmake/tools/*.cpp" "${ROOT}/tests/grading/*.cpp" "${ROOT}/tests/grading/remote/*.cpp")
 set(TIDY_EXTRA -p "${BUILD}" "--header-filter=.*/(cmake/tools|tests/grading)/.*")
 long_functions(found ${files})
 list(TRANSFORM found REPLACE "^${ROOT}/" "")

@@ -3,6 +3,8 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -18,17 +20,30 @@ std::mt19937_64& rng() {
 
 }  // namespace checks
 
-// Defined only in the grading run's replay binaries (tests/grading/replay/replay.cpp): why the
-// test case cannot pass although its checks may have, or an empty string.
-extern "C" const char* workbook_replay_verdict() __attribute__((weak));
+// Defined only in the grading run's judges (tests/grading/remote/judge.cpp): why the test case
+// cannot pass although its checks may have, or an empty string.
+extern "C" const char* workbook_remote_verdict() __attribute__((weak));
+extern "C" unsigned long long workbook_remote_round_trips() __attribute__((weak));
 
 namespace {
 
-// Every test case starts from the same seed, whatever ran before it.
+// Every test case starts from the same seed, whatever ran before it: the public one, or the one
+// the instructor's grading run sets (workbook_grade grade --seed, passed to the judge alone as
+// WORKBOOK_SEED), so that a table of the answers to the public inputs earns nothing.
+std::uint64_t seed() {
+    static const std::uint64_t s = [] {
+        const char* text = std::getenv("WORKBOOK_SEED");
+        char* end = nullptr;
+        const unsigned long long value = text ? std::strtoull(text, &end, 10) : 0;
+        return text && *text && end && !*end ? static_cast<std::uint64_t>(value) : std::uint64_t(20261121);
+    }();
+    return s;
+}
+
 struct Reseed : checks::Listener {
     explicit Reseed(const doctest::ContextOptions&) {}
-    void test_case_start(const doctest::TestCaseData&) override { checks::rng().seed(20261121); }
-    void test_case_reenter(const doctest::TestCaseData&) override { checks::rng().seed(20261121); }
+    void test_case_start(const doctest::TestCaseData&) override { checks::rng().seed(seed()); }
+    void test_case_reenter(const doctest::TestCaseData&) override { checks::rng().seed(seed()); }
 };
 
 REGISTER_LISTENER("reseed", 1, Reseed);
@@ -41,7 +56,7 @@ REGISTER_LISTENER("reseed", 1, Reseed);
 //                                                           every failed check
 //   {"event": "message", "file", "line", "text", "severity"}   MESSAGE, WARN, FAIL
 //   {"event": "exception", "text": ..., "crash": bool}      what escaped the test case
-//   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "replay": ...}
+//   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "remote": ...}
 //   {"event": "run", "cases": n, "failed": n}               the run is over
 struct Verdicts : checks::Listener {
     const doctest::ContextOptions& opt;
@@ -82,9 +97,10 @@ struct Verdicts : checks::Listener {
                          {"success", st.testCaseSuccess},
                          {"failed_checks", st.numAssertsFailedCurrentTest},
                          {"checks", st.numAssertsCurrentTest}};
-        if (workbook_replay_verdict) {
-            const std::string problem = workbook_replay_verdict();
-            j["replay"] = problem;
+        if (workbook_remote_verdict) {
+            const std::string problem = workbook_remote_verdict();
+            j["remote"] = problem;
+            j["round_trips"] = workbook_remote_round_trips ? workbook_remote_round_trips() : 0;
             if (!problem.empty()) j["success"] = false;
         }
         emit(j);

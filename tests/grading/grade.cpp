@@ -1,8 +1,12 @@
 // Grading one submission: take its exercise files (and nothing else), build each topic on its
-// own against the instructor's prebuilt objects, run every test in its own process, and decide
-// each verdict from the replay of its record in a process that runs no student code, never from
-// anything the student's code prints or reports.
+// own in the build sandbox, against the API headers and the instructor's prebuilt objects, then
+// run every test as two processes: the student's, in the sandbox, which runs the student's
+// functions when asked, and the trusted judge, which runs the grader's test case and asks. The
+// verdict comes from the judge, which never runs student code, and from how the student's
+// process ended; never from anything the student's code prints or reports.
 #include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -25,11 +29,12 @@ std::string indent(const std::string& text, const std::string& prefix) {
     return out;
 }
 
-// What the replay's reporter said about one test case (tests/main.cpp, JSON lines).
+// What the judge's reporter said about one test case (tests/main.cpp, JSON lines).
 struct Said {
     bool started = false, ended = false, success = false;
     int failed_checks = 0;
-    std::string replay, exception, first_failure;
+    unsigned long long round_trips = 0;
+    std::string remote, exception, first_failure;
 };
 
 Said read_verdict(const Setup& setup, const std::string& lines, const std::string& test) {
@@ -67,7 +72,8 @@ Said read_verdict(const Setup& setup, const std::string& lines, const std::strin
             said.ended = true;
             said.success = j.value("success", false);
             said.failed_checks = j.value("failed_checks", 0);
-            said.replay = j.value("replay", "");
+            said.remote = j.value("remote", "");
+            said.round_trips = j.value("round_trips", 0ULL);
             inside = false;
         }
     }
@@ -97,22 +103,27 @@ std::string build_problem(const Outcome& o, const std::string& what, const std::
     return "the " + what + " failed with exit status " + std::to_string(o.exit_code);
 }
 
-// Tests come from the graders only: an exercise file that uses doctest to register test cases,
-// reporters or listeners of its own is refused, as the symbols its object uses show. Merely
-// including doctest.h uses none of them.
-std::string test_framework_use(const Setup& setup, const std::string& object, const std::string& work_dir,
-                               const Options& options) {
+// What an exercise file may not do, as the symbols of its object show: use doctest to register
+// tests, reporters or listeners of its own (tests come from the graders only; merely including
+// doctest.h uses none of them), or define an indirect function (ifunc), whose resolver the
+// dynamic linker would run before the student's process has installed its seccomp filter.
+std::string object_problem(const Setup& setup, const std::string& object, const std::string& work_dir,
+                           const Options& options) {
     if (setup.nm.empty()) return {};
     const std::string listing = work_dir + "/logs/symbols.txt";
-    const Outcome o = run_limited({setup.nm, "-C", "-u", object}, work_dir, listing, options.build_limits);
+    const Outcome o = run_limited({setup.nm, "-C", object}, work_dir, listing, options.build_limits);
     if (!o.started || o.exit_code != 0) return {};
-    for (const auto& line : split(read_file(listing), '\n'))
+    for (const auto& line : split(read_file(listing), '\n')) {
+        const auto f = split(trim(line), ' ');
+        if (f.size() >= 3 && f[1] == "i")
+            return "defines an indirect function (ifunc): " + f[2] + ", which the grading run does not allow";
         if (line.find("doctest::detail::regTest") != std::string::npos ||
             line.find("doctest::detail::registerReporterImpl") != std::string::npos ||
             line.find("doctest::detail::registerExceptionTranslatorImpl") != std::string::npos ||
             line.find("doctest::Context::") != std::string::npos)
             return "uses the test framework (doctest) to define tests, reporters or a main: exercise files must not "
                    "define tests or reporters";
+    }
     return {};
 }
 
@@ -129,13 +140,12 @@ struct Run {
     bool not_started = false;
 };
 
-// The verdict of one test: from how the student's process ended (a crash, the time limit),
-// then from the replay of its record in the trusted process, whose reporter says whether the
-// grader's test case passed. Nothing the student's process printed or wrote counts.
-Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Outcome& replayed,
-           const std::string& verdict_lines, const Test& test, const Options& options) {
+// How the student's process ended, when that decides the verdict: it did not start, timed out,
+// was killed by a signal. Empty otherwise.
+Run student_end(const Outcome& o, const Options& options) {
     const double limit = options.test_limits.wall_seconds;
     if (!o.started) return {"crash", "could not start the test: " + o.error};
+    if (o.stopped) return {};  // killed by the harness once the judge was done: decide() says so
     if (o.timed_out)
         return {"timeout", "timed out after " + format_number(limit) +
                                " s and was stopped: an endless loop, or far too much work?"};
@@ -144,37 +154,52 @@ Run decide(const Setup& setup, const Outcome& o, bool record_overflow, const Out
     if (o.signal == SIGXFSZ)
         return {"crash", "output limit exceeded: the test wrote more than " +
                              std::to_string(options.test_limits.output_bytes) + " bytes and was stopped (SIGXFSZ)"};
+    if (o.signal == SIGSYS) return {"crash", "crashed with SIGSYS (a system call of another architecture)"};
     if (o.signal) return {"crash", "crashed with " + signal_name(o.signal)};
-    if (record_overflow) return {"fail", "the record of the test's calls grew past its limit of 256 MiB"};
-    const std::string status = "the process exited with status " + std::to_string(o.exit_code);
-    if (!replayed.started) return {"fail", "could not replay the test: " + replayed.error};
-    const Said said = read_verdict(setup, verdict_lines, test.name);
-    if (replayed.timed_out || replayed.signal || !said.ended) {
-        std::string why = replayed.timed_out ? "took longer than " + format_number(limit) + " s"
-                          : replayed.signal  ? "was killed by " + signal_name(replayed.signal)
-                                             : "ended without a verdict";
-        return {"fail", "the replay of the test's record " + why + (said.replay.empty() ? "" : ": " + said.replay)};
-    }
-    if (!said.replay.empty()) {
-        if (said.replay.find("ends before") != std::string::npos ||
-            said.replay.find("stops inside") != std::string::npos ||
-            said.replay.find("left no record") != std::string::npos)
-            return {"fail", "the test did not report completion: " + status +
-                                " before the test finished (exit(), quick_exit() or _exit() in the exercise code?); " +
-                                said.replay};
-        return {"fail", "the test's record does not replay: " + said.replay};
-    }
-    if (said.success) {
-        if (o.exit_code == 0) return {"pass", ""};
-        return {"fail", "the test passed but then " + status};
-    }
+    return {};
+}
+
+std::string failure_message(const Said& said) {
     std::string message = said.first_failure;
     if (message.empty() && !said.exception.empty()) message = "threw an exception: " + said.exception + "\n";
     if (said.failed_checks > 1)
         message += "(" + std::to_string(said.failed_checks) + " checks failed in this test; the first is shown)\n";
     if (message.empty()) message = "the test failed\n";
     if (message.back() == '\n') message.pop_back();
-    return {"fail", message};
+    return message;
+}
+
+// The verdict of one test: from how the student's process ended (a crash, the time limit),
+// then from the judge, whose reporter says whether the grader's test case passed. Nothing the
+// student's process printed or wrote counts.
+Run decide(const Setup& setup, const Outcome& student, const Outcome& judged, const std::string& verdict_lines,
+           const Test& test, const Options& options) {
+    if (Run r = student_end(student, options); !r.verdict.empty()) return r;
+    const std::string status = student.stopped ? "did not end when the test was over"
+                                               : "exited with status " + std::to_string(student.exit_code);
+    if (!judged.started) return {"fail", "could not run the judge: " + judged.error};
+    if (judged.timed_out)
+        return {"timeout", "timed out after " + format_number(options.test_limits.wall_seconds) +
+                               " s and was stopped: an endless loop, or far too much work?"};
+    const Said said = read_verdict(setup, verdict_lines, test.name);
+    if (judged.signal || !said.ended)
+        return {"fail",
+                "the judge " +
+                    (judged.signal ? "was killed by " + signal_name(judged.signal) : "ended without a verdict") +
+                    (said.remote.empty() ? "" : ": " + said.remote)};
+    if (!said.remote.empty()) {
+        if (said.remote.find("ended inside this call") != std::string::npos ||
+            said.remote.find("process is gone") != std::string::npos)
+            return {"fail", "the test did not finish: the submission's process " + status +
+                                " during the test (exit(), quick_exit() or _exit() in the exercise code?); " +
+                                said.remote};
+        return {"fail", said.remote};
+    }
+    if (said.success) {
+        if (student.exit_code == 0 && !student.stopped) return {"pass", ""};
+        return {"fail", "the test passed but then the submission's process " + status};
+    }
+    return {"fail", failure_message(said)};
 }
 
 }  // namespace
@@ -263,70 +288,109 @@ struct Grading {
     std::string work_dir, log_dir;
 
     // Messages name the student's file as exercises/<topic>.cpp and the workbook's files by
-    // their paths in the workbook, whatever folders the run uses.
-    std::string relative(const std::string& text) const {
-        return relative_to_root(setup, replace_all(text, work_dir + "/", ""));
+    // their paths in the workbook, whatever folders the run and its sandbox use.
+    std::string relative(std::string text) const {
+        for (const std::string& prefix : {work_dir + "/", std::string("/submission/"), std::string("/workbook/"),
+                                          options.stage.dir + "/api/", options.stage.dir + "/jobs/"})
+            if (prefix.size() > 1) text = replace_all(text, prefix, "");
+        return relative_to_root(setup, text);
     }
     bool selected(const Exercise& exercise) const {
         return selection.exercise.empty() || exercise.name == selection.exercise;
     }
 };
 
-// A topic's test binary, built from the student's file: compiled with the build's flags, checked
-// for its own use of the test framework, linked with the graders and the recorder. Returns an
-// empty verdict, or "build error" with the problem.
+// A topic's student binary, built from the student's file in the build sandbox: compiled with the
+// build's flags against the API headers alone, checked (object_problem), linked with the
+// student's side of the API and the reference libraries of its dependencies. Returns an empty
+// verdict, or "build error" with the problem.
 struct Built {
-    std::string verdict, problem, binary;
+    std::string verdict, problem, binary, job;
 };
 
-Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& file) {
-    const std::string& work_dir = g.work_dir;
-    const std::string source = work_dir + "/exercises/" + topic.name + ".cpp";
-    const std::string object = work_dir + "/obj/" + topic.name + ".o";
-    const std::string log = work_dir + "/logs/" + topic.name + ".txt";
-    Built b{"", "", work_dir + "/bin/grade_" + topic.name};
-    write_file(source, file.content);
-    std::vector<std::string> compile;
-    std::string key = file.content;
-    for (const auto& w : topic.compile) {
-        compile.push_back(w == "@SOURCE@" ? source : w == "@OBJECT@" ? object : w);
-        key += "\n" + w;
-    }
-    // --object-cache (the mutation gate): the same source with the same command is compiled once.
+// The command with the view's folders and the files filled in.
+std::vector<std::string> fill(const std::vector<std::string>& words, const View& view, const std::string& source,
+                              const std::string& object) {
+    std::vector<std::string> out;
+    for (const auto& w : words)
+        out.push_back(w == "@SOURCE@"   ? source
+                      : w == "@OBJECT@" ? object
+                                        : replace_all(replace_all(w, "@API@", view.api), "@LINK@", view.link));
+    return out;
+}
+
+// The build sandbox's limits: the API headers, the link inputs and the job folder.
+Limits build_limits(const Grading& g, const std::string& job) {
+    Limits limits = g.options.build_limits;
+    limits.sandbox = Sandbox::build;
+    limits.binds = {{g.options.stage.dir + "/api", "/workbook", false},
+                    {g.options.stage.dir + "/link", "/link", false},
+                    {job, "/submission", true}};
+    return limits;
+}
+
+// Compiles the student's file (once per source and command with --object-cache, the mutation
+// gate's). Returns how the compiler ended; the log is in `log`.
+Outcome compile(const Grading& g, const Topic& topic, const std::string& content, const std::string& job,
+                const std::string& log) {
+    const View view = view_of(g.options.stage, job);
+    const std::string object = job + "/obj/" + topic.name + ".o";
+    std::string key = content;
+    for (const auto& w : topic.compile) key += "\n" + w;
     const std::string cached = g.options.object_cache.empty()
                                    ? std::string()
                                    : g.options.object_cache + "/" + topic.name + "-" + hex(hash(key)) + ".o";
-    Outcome o;
     if (!cached.empty() && !read_file(cached).empty() && write_file(object, read_file(cached))) {
-        o.started = true, o.exit_code = 0;
         write_file(log, "(compiled once before: " + cached + ")\n");
-    } else {
-        o = run_limited(compile, work_dir, log, g.options.build_limits);
-        if (!cached.empty() && o.started && !o.timed_out && !o.signal && o.exit_code == 0) {
-            make_dirs(g.options.object_cache);
-            write_file(cached, read_file(object));
-        }
+        Outcome o;
+        o.started = true, o.exit_code = 0;
+        return o;
     }
+    const Outcome o = run_limited(fill(topic.compile, view, view.submission + "/exercises/" + topic.name + ".cpp",
+                                       view.submission + "/obj/" + topic.name + ".o"),
+                                  job, log, build_limits(g, job));
+    if (!cached.empty() && o.started && !o.timed_out && !o.signal && o.exit_code == 0) {
+        make_dirs(g.options.object_cache);
+        write_file(cached, read_file(object));
+    }
+    return o;
+}
+
+Outcome link(const Grading& g, const Topic& topic, const std::string& job, const std::string& log) {
+    const View view = view_of(g.options.stage, job);
+    std::vector<std::string> command = {g.setup.compiler};
+    command.insert(command.end(), g.setup.link_flags.begin(), g.setup.link_flags.end());
+    command.push_back(view.submission + "/obj/" + topic.name + ".o");
+    const auto inputs = fill(topic.link, view, "", "");
+    command.insert(command.end(), inputs.begin(), inputs.end());
+    command.push_back("-o");
+    command.push_back(view.submission + "/bin/serve_" + topic.name);
+    return run_limited(command, job, log, build_limits(g, job));
+}
+
+Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& file) {
+    const std::string log = g.work_dir + "/logs/" + topic.name + ".txt";
+    std::string job;
+    Built b;
+    if (auto problem = make_job(g.options.stage, job); !problem.empty()) return {"build error", problem, "", ""};
+    b.binary = job + "/bin/serve_" + topic.name;
+    b.job = job;
+    const std::string source = job + "/exercises/" + topic.name + ".cpp";
+    if (!write_file(source, file.content) || chmod(source.c_str(), 0644) != 0)
+        return {"build error", "cannot write " + source, "", job};
+    Outcome o = compile(g, topic, file.content, job, log);
     std::string text = g.relative(read_file(log));
     std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
+    const std::string object = job + "/obj/" + topic.name + ".o";
     if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
         b.verdict = "build error", b.problem = build_problem(o, "compiler", text, g.options.build_limits);
-    } else if (const std::string why = test_framework_use(g.setup, object, work_dir, g.options); !why.empty()) {
+    } else if (const std::string why = object_problem(g.setup, object, g.work_dir, g.options); !why.empty()) {
         b.verdict = "build error", b.problem = "exercises/" + topic.name + ".cpp " + why;
         build_log += "$ nm exercises/" + topic.name + ".o\n" + b.problem + "\n";
     } else {
-        std::vector<std::string> link = {g.setup.compiler};
-        link.insert(link.end(), g.setup.link_flags.begin(), g.setup.link_flags.end());
-        link.insert(link.end(), topic.objects.begin(), topic.objects.end());
-        link.push_back(object);
-        link.insert(link.end(), topic.recorder.begin(), topic.recorder.end());
-        link.insert(link.end(), topic.link.begin(), topic.link.end());
-        link.insert(link.end(), topic.wraps.begin(), topic.wraps.end());
-        link.push_back("-o");
-        link.push_back(b.binary);
-        o = run_limited(link, work_dir, log, g.options.build_limits);
+        o = link(g, topic, job, log);
         text = g.relative(read_file(log));
-        build_log += "$ link with the graders of " + topic.name + "\n" + first_lines(text, 200000);
+        build_log += "$ link with the student's side of " + topic.name + "'s API\n" + first_lines(text, 200000);
         if (!o.started || o.timed_out || o.signal || o.exit_code != 0)
             b.verdict = "build error", b.problem = build_problem(o, "linker", text, g.options.build_limits);
     }
@@ -334,43 +398,72 @@ Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& fil
     return b;
 }
 
-// One test, in its own process in the sandbox: it records what the student's functions
-// returned. Then the trusted replay binary runs the same test on that record and says whether
-// it passes.
-TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& file, const std::string& binary,
-                    const Exercise& exercise, std::size_t k) {
+// One test, as two processes joined by a socket: the student's, in the sandbox, serving calls
+// of the student's functions, and the trusted judge, which runs the grader's test case and
+// reports its verdict on a pipe.
+struct TestRun {
+    Outcome student, judged;
+    std::string verdicts;
+};
+
+TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary, const Test& test) {
     const std::string& work_dir = g.work_dir;
     const std::string run_dir = work_dir + "/run";
-    const std::string output_path = work_dir + "/logs/output.txt";
-    const std::string record_path = work_dir + "/logs/record.bin";
-    const std::string file_filter = "*/" + topic.test_file;
-    const Test& test = exercise.tests[k];
+    TestRun r;
     if (isolation() != Isolation::namespaces) {
         remove_tree(run_dir);
         make_dirs(run_dir);
-        if (isolation() == Isolation::user) (void)!chown(run_dir.c_str(), 65534, 65534);
     }
-    std::string record, verdicts;
-    bool overflow = false;
+    int pair[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) {
+        r.student.error = std::string("socketpair: ") + std::strerror(errno);
+        return r;
+    }
+    // The mailboxes the two share (tests/grading/remote/channel.hpp), zeroed, for this test alone.
+    const int shared = memfd_create("workbook-mailboxes", MFD_CLOEXEC);
+    if (shared < 0 || ftruncate(shared, 4 << 20) != 0) {
+        r.student.error = std::string("memfd_create: ") + std::strerror(errno);
+        close(pair[0]), close(pair[1]);
+        if (shared >= 0) close(shared);
+        return r;
+    }
     Limits limits = g.options.test_limits;
-    limits.isolate = true;
+    limits.sandbox = Sandbox::test;
     limits.environment.insert(limits.environment.end(), g.options.test_environment.begin(),
                               g.options.test_environment.end());
-    const Outcome t = run_limited({binary, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
-                                   "--out=/dev/null", "--no-exitcode", "--no-version", "--no-colors"},
-                                  run_dir, output_path, limits, &record, 256u << 20, &overflow);
-    Outcome replayed;
-    if (t.started && !t.timed_out && !t.signal && !overflow) {
-        write_file(record_path, record);
-        Limits replay_limits = g.options.test_limits;
-        replay_limits.isolate = false;
-        replay_limits.memory_mb += 512;  // the record itself, up to 256 MiB
-        replay_limits.environment = {"WORKBOOK_RECORD=" + record_path};
-        replayed = run_limited({topic.replay, "-tc=" + test.name, "-sf=" + file_filter, "--reporters=workbook",
-                                "--out=/dev/fd/3", "--no-version", "--no-colors"},
-                               work_dir, work_dir + "/logs/replay.txt", replay_limits, &verdicts);
+    Started student = start_limited({binary}, run_dir, work_dir + "/logs/output.txt", limits, {pair[0], shared});
+    close(pair[0]);
+    Limits judge = g.options.test_limits;
+    judge.memory_mb += 512;  // the messages themselves, up to 256 MiB each
+    judge.environment = {};
+    if (!g.options.seed.empty()) judge.environment.push_back("WORKBOOK_SEED=" + g.options.seed);
+    r.judged =
+        run_limited({topic.judge, "-tc=" + test.name, "-sf=*/" + topic.test_file, "--reporters=workbook",
+                     "--out=/dev/fd/5", "--no-version", "--no-colors"},
+                    work_dir, work_dir + "/logs/judge.txt", judge, &r.verdicts, 64u << 20, nullptr, {pair[1], shared});
+    close(pair[1]);
+    close(shared);
+    r.student = wait_limited(student, 2.0);  // told the test is over, it ends
+    // Past its deadline only because it did not end when the judge was done: stopped, not timed out.
+    if (r.judged.started && !r.judged.timed_out && r.student.timed_out)
+        r.student.timed_out = false, r.student.stopped = true;
+    return r;
+}
+
+TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& file, const std::string& binary,
+                    const Exercise& exercise, std::size_t k) {
+    const Test& test = exercise.tests[k];
+    const TestRun pair = run_pair(g, topic, binary, test);
+    Run r = decide(g.setup, pair.student, pair.judged, pair.verdicts, test, g.options);
+    // The cost of the test: its wall time and its round trips between the two processes
+    // (logs/<student>/timing.tsv; not in the results, which must not change from run to run).
+    if (!g.log_dir.empty()) {
+        const Said said = read_verdict(g.setup, pair.verdicts, test.name);
+        char line[64];
+        std::snprintf(line, sizeof line, "\t%.4f\t%llu\n", pair.judged.seconds, said.round_trips);
+        const std::string timing = g.log_dir + "/timing.tsv";
+        write_file(timing, read_file(timing) + test.name + "\t" + r.verdict + line);
     }
-    Run r = decide(g.setup, t, overflow, replayed, verdicts, test, g.options);
     // An exercise whose body is still the stub's todo("<name>") is not started.
     if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
         r.not_started = true;
@@ -387,7 +480,7 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
                   g.relative(r.message),
                   ""};
     if (tr.verdict == "pass") tr.score = tr.max_score;
-    std::string printed = read_file(output_path);
+    std::string printed = read_file(g.work_dir + "/logs/output.txt");
     if (printed.size() > 500) printed = first_lines(printed, 500);
     tr.output = printed;
     return tr;
@@ -409,12 +502,18 @@ void grade_unbuilt(const Grading& g, const Topic& topic, const std::string& verd
 void grade_topic(const Grading& g, const Topic& topic, const SubmittedFile& file, SubmissionResult& result) {
     if (file.state != "ok") return grade_unbuilt(g, topic, "missing", file.reason, result);
     const Built b = build_topic(g, topic, file);
-    if (!b.verdict.empty()) return grade_unbuilt(g, topic, b.verdict, b.problem, result);
-    for (const auto& exercise : topic.exercises) {
-        if (!g.selected(exercise)) continue;
-        for (std::size_t k = 0; k < exercise.tests.size(); ++k)
-            result.tests.push_back(run_test(g, topic, file, b.binary, exercise, k));
+    if (b.verdict.empty()) {
+        for (const auto& exercise : topic.exercises) {
+            if (!g.selected(exercise)) continue;
+            for (std::size_t k = 0; k < exercise.tests.size(); ++k)
+                result.tests.push_back(run_test(g, topic, file, b.binary, exercise, k));
+        }
+    } else {
+        grade_unbuilt(g, topic, b.verdict, b.problem, result);
     }
+    // The job folder (in the run's stage): kept in the work folder with --keep-work, else gone.
+    if (!b.job.empty() && g.options.keep_work) std::rename(b.job.c_str(), (g.work_dir + "/job-" + topic.name).c_str());
+    if (!b.job.empty()) remove_tree(b.job);
 }
 
 }  // namespace
@@ -426,8 +525,8 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
     result.student = student;
     result.fingerprint = fingerprint(setup, options, files, selection.key());
     remove_tree(work_dir);
-    for (const char* sub : {"exercises", "obj", "bin", "run", "logs"}) make_dirs(work_dir + "/" + sub);
-    if (!log_dir.empty()) make_dirs(log_dir);
+    for (const char* sub : {"run", "logs"}) make_dirs(work_dir + "/" + sub);
+    if (!log_dir.empty()) make_dirs(log_dir), std::remove((log_dir + "/timing.tsv").c_str());
     const Grading g{setup, options, selection, work_dir, log_dir};
     for (std::size_t k = 0; k < setup.topics.size(); ++k) {
         const Topic& topic = setup.topics[k];
@@ -496,7 +595,7 @@ std::string flat(const std::string& s) {
 }  // namespace
 
 std::string results_tsv(const SubmissionResult& r, const std::string& json) {
-    std::string out = "fingerprint\t" + r.fingerprint + "\nstudent\t" + flat(r.student) + "\n";
+    std::string out = "fingerprint\t" + r.fingerprint + "\nstudent\t" + flat(r.student) + "\nseed\t" + r.seed + "\n";
     if (!json.empty()) out += "json\t" + hex(hash(json)) + "\n";
     for (const auto& n : r.notes) out += "note\t" + flat(n) + "\n";
     for (const auto& t : r.tests) {
@@ -521,6 +620,8 @@ bool read_results_tsv(const std::string& path, SubmissionResult& r) {
             r.fingerprint = f[1];
         else if (f[0] == "student" && f.size() > 1)
             r.student = f[1];
+        else if (f[0] == "seed" && f.size() > 1)
+            r.seed = f[1];
         else if (f[0] == "json" && f.size() > 1)
             r.json_hash = f[1];
         else if (f[0] == "note" && f.size() > 1)

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -45,46 +46,81 @@ std::vector<std::string> list_dir(const std::string& path);  // sorted names, wi
 std::vector<std::string> shell_split(const std::string& command);
 
 // ---- running a program under limits (sandbox.cpp) -----------------------------------------
+// Where a program runs: as it is (the workbook's own tools), as a student's process (Sandbox::
+// test), or as a student's compile and link (Sandbox::build).
+enum class Sandbox { none, test, build };
+
+struct Bind {
+    std::string source, target;  // a folder of the harness's, and where the sandbox sees it
+    bool writable = false;
+};
+
 struct Limits {
     double wall_seconds = 10;              // killed (the whole process group) after this
     long memory_mb = 1024;                 // address space
     long output_bytes = 1 << 20;           // any file it writes, its output included
-    bool forbid_processes = true;          // no fork, no threads (RLIMIT_NPROC 0)
-    bool isolate = false;                  // in the sandbox (see configure_sandbox)
+    bool forbid_processes = true;          // Sandbox::none: no fork, no threads (RLIMIT_NPROC 0)
+    Sandbox sandbox = Sandbox::none;       // see configure_sandbox
+    std::vector<Bind> binds;               // Sandbox::build: what the compile sees besides /usr
+    int threads = 16;                      // Sandbox::test: threads besides the main one (see below)
     std::vector<std::string> environment;  // more NAME=value for the program
 };
 
-// The sandbox of a student's test process (sandbox.cpp). With bubblewrap: new user, PID,
-// mount, network, IPC and UTS namespaces; only /usr (read-only), a fresh /proc and /dev, an
-// empty size-limited /work as its working folder and the test binary itself (a copy, read-only)
-// are visible; no capabilities; no new processes (RLIMIT_NPROC 0 inside); and everything it
-// starts dies with it. Started as root, it first becomes the unprivileged user nobody (65534).
-// Without a working bubblewrap: as nobody when root, with the limits alone otherwise.
+// The sandbox of a student's code (sandbox.cpp). With bubblewrap: new user, PID, mount,
+// network, IPC and UTS namespaces; /usr read-only, a fresh /proc and /dev; no capabilities;
+// everything it starts dies with it. A student's process (Sandbox::test) sees besides only an
+// empty size-limited /work, its working folder, and its own binary (a copy, read-only); inside,
+// before any of the student's code runs, it installs a seccomp filter: threads, but no new
+// process and no new program (tests/grading/remote/serve.cpp). A compile (Sandbox::build) sees
+// an empty /tmp and the folders Limits::binds names: the API headers, the link inputs and the
+// submission's own folder. Started as root, either first becomes a user of its own
+// (sandbox_uid(): it owns no file and no other process), and a student's process may then run
+// `threads` threads besides its main one (RLIMIT_NPROC, which counts that user's processes);
+// not started as root, the number of its threads is bounded by its memory limit alone.
+// Without a working bubblewrap: as a user of its own when root, with the limits and the filter;
+// otherwise with no sandbox at all (isolation() tells; `grade` refuses that unless --unsafe).
 enum class Isolation { namespaces, user, limits_only };
 // Probes what works here (once per run); returns a sentence for the log.
 std::string configure_sandbox();
 Isolation isolation();
+unsigned sandbox_uid();
 
 struct Outcome {
     bool started = false;
     bool timed_out = false;
-    int signal = 0;      // the signal that ended it, 0 if it exited
-    int exit_code = -1;  // when it exited
+    bool stopped = false;  // stopped by the harness at the end of its grace (wait_limited), not at its deadline
+    int signal = 0;        // the signal that ended it, 0 if it exited
+    int exit_code = -1;    // when it exited
     double seconds = 0;
     std::string error;  // why it could not start
 };
 
-// Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. With a
-// report, the program also gets a pipe as file descriptor 3 (/dev/fd/3), read into *report
-// while it runs (up to report_limit bytes; *report_overflow tells when more came): outside the
-// output limit, and in no file the program could name. With limits.isolate it runs in the
-// sandbox, and cwd only matters without namespaces.
+// Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. The
+// descriptors in pass_fds become its 3, 4, ...; with a report, the program also gets a pipe as
+// the next one, read into *report while it runs (up to report_limit bytes; *report_overflow
+// tells when more came): outside the output limit, and in no file the program could name.
+// In a sandbox, cwd only matters without namespaces.
 Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
                     const Limits& limits, std::string* report = nullptr, std::size_t report_limit = 64u << 20,
-                    bool* report_overflow = nullptr);
+                    bool* report_overflow = nullptr, const std::vector<int>& pass_fds = {});
+// The same in two steps, to run two programs at once (a student's process and its judge).
+struct Started {
+    Outcome outcome;  // why it could not start (outcome.error), until wait_limited fills it
+    struct Impl;
+    std::unique_ptr<Impl> impl;
+    Started();
+    ~Started();  // stops it if it still runs
+    Started(Started&&) noexcept;
+    Started& operator=(Started&&) noexcept;
+};
+Started start_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
+                      const Limits& limits, const std::vector<int>& pass_fds = {}, std::string* report = nullptr,
+                      std::size_t report_limit = 64u << 20, bool* report_overflow = nullptr);
+// Waits until it ends, its deadline, or (grace_seconds >= 0) that many seconds from now.
+Outcome wait_limited(Started& started, double grace_seconds = -1);
 std::string signal_name(int signal);
-// For a worker: SIGINT, SIGTERM or SIGHUP kills the process group run_limited is waiting for
-// (a compiler and its cc1plus, or a test and its sandbox), then ends the worker.
+// For a worker: SIGINT, SIGTERM or SIGHUP kills the process groups run_limited waits for
+// (a compiler and its cc1plus, or a test, its sandbox and its judge), then ends the worker.
 void stop_children_on_signal();
 
 // ---- what is graded (setup.cpp) ------------------------------------------------------------
@@ -110,13 +146,21 @@ struct Topic {
     std::string name, chapter;
     std::string test_file;  // tests/<topic>_test.cpp, relative to the root
     std::vector<Exercise> exercises;
-    std::string reference;              // the reference grader binary
-    std::vector<std::string> objects;   // the grader's compiled tests
-    std::vector<std::string> link;      // what a student's object is linked with
-    std::vector<std::string> compile;   // compile command; @SOURCE@ and @OBJECT@ to fill in
-    std::string replay;                 // the trusted verdict binary (no student code)
-    std::vector<std::string> recorder;  // objects linked into a student's test binary
-    std::vector<std::string> wraps;     // -Wl,--wrap=<symbol>, one per API function the grader calls
+    std::string reference;             // the reference grader binary
+    std::vector<std::string> objects;  // the grader's compiled tests
+    // How a student's file is built, as the build sandbox sees it (see View): the compile
+    // command with @API@, @SOURCE@ and @OBJECT@ to fill in, and what its object is linked with
+    // (the student's side of the API, the reference libraries of the topic's dependencies, the
+    // system's libraries) with @LINK@ for the folder of the link inputs.
+    std::vector<std::string> compile;
+    std::vector<std::string> link;
+    std::string judge;  // the trusted judge of this topic's tests (no student code)
+};
+
+// A file the build sandbox sees under @LINK@/<name>: copied there from the build when the run
+// starts (Stage).
+struct LinkInput {
+    std::string name, path;
 };
 
 struct Setup {
@@ -124,9 +168,28 @@ struct Setup {
     std::vector<std::string> link_flags;
     std::vector<Chapter> chapters;
     std::vector<Topic> topics;
+    std::vector<LinkInput> link_inputs;
     std::string manifest_text;
     std::string fingerprint;  // of everything on the instructor's side
 };
+
+// The folder a run builds students' files in (in /tmp, made by make_stage, removed by
+// remove_stage): copies of the API headers (api/exercises/rigid/, api/exercises/provided/rigid/)
+// and of the link inputs (link/), and a folder per build (jobs/). The build sandbox binds
+// api/ at /workbook, link/ at /link and a job's folder at /submission; without namespaces the
+// compile reads them where they are.
+struct Stage {
+    std::string dir;
+};
+std::string make_stage(const Setup& setup, Stage& stage);  // an empty string or the error
+void remove_stage(const Stage& stage);
+// A new job folder (exercises/, obj/, bin/), owned by the sandbox's user when the run is root's.
+std::string make_job(const Stage& stage, std::string& job);
+// Where a build sees the API headers (@API@), the link inputs (@LINK@) and its job folder.
+struct View {
+    std::string api, link, submission;
+};
+View view_of(const Stage& stage, const std::string& job);
 
 // Writes the manifest from topics.txt (build time). Returns an empty string or the error.
 std::string make_manifest(const std::string& topics_path, const std::string& points_path, const std::string& out_path);
@@ -143,7 +206,7 @@ std::string relative_to_root(const Setup& setup, std::string text);
 // ---- grading one submission (grade.cpp) ------------------------------------------------------
 struct Options {
     Limits test_limits;
-    Limits build_limits{120, 4096, 256L << 20, false, false, {}};
+    Limits build_limits{120, 4096, 256L << 20, false, Sandbox::none, {}, 0, {}};
     long max_file_bytes = 1 << 20;
     bool keep_work = false;
     // The mutation gate's (tests/grading/mutants/): NAME=VALUE pairs added to each test's
@@ -151,6 +214,8 @@ struct Options {
     // so that one file graded many times is compiled once.
     std::vector<std::string> test_environment;
     std::string object_cache;
+    Stage stage;       // where students' files are built (make_stage)
+    std::string seed;  // the graders' random inputs: checks::rng()'s seed (empty: the public one)
 };
 
 // One topic's file as found in a submission.
@@ -178,6 +243,7 @@ struct TestResult {
 
 struct SubmissionResult {
     std::string student;
+    std::string seed;  // the --seed it was graded with (in the .tsv only, never in the results .json)
     std::string fingerprint;
     std::string json_hash;  // of the results .json it was written with (from the .tsv)
     std::vector<TestResult> tests;

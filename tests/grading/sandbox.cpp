@@ -18,6 +18,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <thread>
 
 #include "grading.hpp"
@@ -85,70 +86,71 @@ std::string signal_name(int signal) {
 namespace {
 
 Isolation mode = Isolation::limits_only;
-constexpr uid_t nobody = 65534;
 const char* const bwrap = "/usr/bin/bwrap";
-const char* const prlimit = "/usr/bin/prlimit";
 
-// Everything the sandboxed program sees, after the bubblewrap path. The output limit is set
-// inside, by prlimit: bubblewrap writes the test binary into the sandbox (--ro-bind-data), and
-// that write must not count against what the test may write (a binary over the limit would
-// otherwise fail every test with "File too large").
-std::vector<std::string> bwrap_arguments(const std::string& name, long tmp_bytes, long output_bytes) {
-    std::vector<std::string> a = {bwrap,
-                                  "--unshare-all",
-                                  "--die-with-parent",
-                                  "--new-session",
-                                  "--cap-drop",
-                                  "ALL",
-                                  "--ro-bind",
-                                  "/usr",
-                                  "/usr",
-                                  "--symlink",
-                                  "usr/lib",
-                                  "/lib",
-                                  "--symlink",
-                                  "usr/lib64",
-                                  "/lib64",
-                                  "--symlink",
-                                  "usr/bin",
-                                  "/bin",
-                                  "--proc",
-                                  "/proc",
-                                  "--dev",
-                                  "/dev",
-                                  "--size",
-                                  std::to_string(tmp_bytes),
-                                  "--tmpfs",
-                                  "/work",
-                                  "--chdir",
-                                  "/work",
-                                  "--perms",
-                                  "0555",
-                                  "--ro-bind-data",
-                                  "4",
-                                  "/run/test/" + name};
-    if (access(prlimit, X_OK) == 0) {
-        const std::string fsize = std::to_string(output_bytes);
-        a.insert(a.end(), {prlimit, "--nproc=0:0", "--core=0:0", "--fsize=" + fsize + ":" + fsize});
-    }
+// What every sandbox has: new namespaces of every kind, no capabilities, its own session, dies
+// with the harness; /usr read-only (with the usual links to it), its own /proc and /dev.
+std::vector<std::string> bwrap_base() {
+    return {bwrap,    "--unshare-all", "--die-with-parent", "--new-session", "--cap-drop", "ALL",       "--ro-bind",
+            "/usr",   "/usr",          "--symlink",         "usr/lib",       "/lib",       "--symlink", "usr/lib64",
+            "/lib64", "--symlink",     "usr/bin",           "/bin",          "--proc",     "/proc",     "--dev",
+            "/dev"};
+}
+
+// The student's process: besides the base, an empty size-limited /work as its working folder
+// and a copy of its binary, from file descriptor `binary_fd` (opened before the harness gave up
+// root, so that no path needs to be reachable by the sandbox's user). The output limit is set
+// inside, by the binary itself (remote/serve.cpp), because bubblewrap's copy of the binary must
+// not count against it.
+std::vector<std::string> bwrap_test(const std::string& name, long tmp_bytes, int binary_fd) {
+    std::vector<std::string> a = bwrap_base();
+    a.insert(a.end(), {"--size", std::to_string(tmp_bytes), "--tmpfs", "/work", "--chdir", "/work", "--perms", "0555",
+                       "--ro-bind-data", std::to_string(binary_fd), "/run/test/" + name});
     return a;
 }
 
-bool drop_to_nobody() {
-    if (geteuid() != 0) return true;
-    return setgroups(0, nullptr) == 0 && setgid(nobody) == 0 && setuid(nobody) == 0;
+// The student's compile and link: besides the base, an empty /tmp and the folders the harness
+// binds (the API headers, the link inputs, the submission's own folder: Limits::binds).
+std::vector<std::string> bwrap_build(const Limits& limits) {
+    std::vector<std::string> a = bwrap_base();
+    a.insert(a.end(), {"--tmpfs", "/tmp"});
+    for (const auto& b : limits.binds) a.insert(a.end(), {b.writable ? "--bind" : "--ro-bind", b.source, b.target});
+    if (!limits.binds.empty()) a.insert(a.end(), {"--chdir", limits.binds.back().target});
+    return a;
 }
 
 }  // namespace
 
 Isolation isolation() { return mode; }
 
+// The users sandboxed programs run as when the harness is root: users of their own, which own no
+// file. A build's is the harness process's (it owns the job folder); a student's process has one
+// from its own process ID, so that the process limit counts its threads alone, and never a
+// previous test's processes that the kernel has not yet taken down.
+unsigned sandbox_uid() { return 1000000000u + static_cast<unsigned>(getpid()); }
 namespace {
-volatile std::sig_atomic_t running_group = 0;  // the process group of the program run_limited waits for
+unsigned test_uid(pid_t child) { return 2000000000u + static_cast<unsigned>(child); }
+}  // namespace
+
+namespace {
+constexpr int max_groups = 4;
+volatile std::sig_atomic_t running_groups[max_groups] = {0, 0, 0, 0};  // the groups run_limited waits for
 void stop_and_exit(int) {
-    const pid_t group = running_group;
-    if (group > 0) kill(-group, SIGKILL);
+    for (int k = 0; k < max_groups; ++k)
+        if (running_groups[k] > 0) kill(-static_cast<pid_t>(running_groups[k]), SIGKILL);
     _exit(1);
+}
+void remember_group(pid_t pid, bool add) {
+    for (int k = 0; k < max_groups; ++k) {
+        if (add && running_groups[k] == 0) {
+            running_groups[k] = pid;
+            return;
+        }
+        if (!add && running_groups[k] == pid) {
+            running_groups[k] = 0;
+            return;
+        }
+    }
 }
 }  // namespace
 
@@ -165,41 +167,43 @@ std::string configure_sandbox() {
     mode = Isolation::limits_only;
     // WORKBOOK_GRADE_NO_BWRAP=1 tries the fallback where bubblewrap exists.
     const bool allowed = !std::getenv("WORKBOOK_GRADE_NO_BWRAP");
+    const bool root = geteuid() == 0;
     if (allowed && access(bwrap, X_OK) == 0) {
         mode = Isolation::namespaces;
         char dir[] = "/tmp/workbook-probe-XXXXXX";
         if (mkdtemp(dir)) {
             Limits probe;
             probe.wall_seconds = 20;
-            probe.isolate = true;
+            probe.sandbox = Sandbox::build;
             const std::string out = std::string(dir) + "/out.txt";
             const Outcome o = run_limited({"/bin/true"}, dir, out, probe);
             const std::string said = trim(read_file(out));
             remove_tree(dir);
             if (o.started && !o.timed_out && o.signal == 0 && o.exit_code == 0)
-                return std::string("sandbox: bubblewrap namespaces") + (geteuid() == 0 ? ", as the user nobody" : "");
-            mode = Isolation::limits_only;
-            if (geteuid() == 0) mode = Isolation::user;
+                return std::string("sandbox: bubblewrap namespaces") + (root ? ", as a user of its own" : "");
+            mode = root ? Isolation::user : Isolation::limits_only;
             return "sandbox: bubblewrap does not work here (" +
-                   (said.empty() ? "exit " + std::to_string(o.exit_code) : said) + "); tests run " +
-                   (geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
+                   (said.empty() ? "exit " + std::to_string(o.exit_code) : said) + "); " +
+                   (root ? "students' code runs as a user of its own, with the limits" : "no sandbox");
         }
     }
-    if (geteuid() == 0) mode = Isolation::user;
+    if (root) mode = Isolation::user;
     return std::string(allowed ? "sandbox: no bubblewrap (apt-get install bubblewrap)"
                                : "sandbox: bubblewrap not used (WORKBOOK_GRADE_NO_BWRAP)") +
-           "; tests run " + std::string(geteuid() == 0 ? "as the user nobody, " : "") + "with the limits alone";
+           "; " + (root ? "students' code runs as a user of its own, with the limits" : "no sandbox");
 }
 
 namespace {
 
 // What the child needs, all prepared before fork (after it, only async-signal-safe calls).
 struct Launch {
-    bool namespaces = false, as_nobody = false;
+    bool namespaces = false, own_user = false;
+    uid_t uid = 0;
     std::vector<std::string> command, environment;
     std::vector<char*> args, env;
-    int program = -1;  // the test binary, copied into the sandbox by bubblewrap from fd 4
-    rlim_t cpu = 0, memory = 0, output = 0;
+    std::vector<int> keep;  // the descriptors the program gets as 3, 4, ...
+    int program = -1;       // the test binary, for bubblewrap to copy (namespaces) or for fexecve
+    rlim_t cpu = 0, memory = 0, output = 0, processes = 0;
     ~Launch() {
         if (program >= 0) close(program);
     }
@@ -207,43 +211,55 @@ struct Launch {
 
 // The command (bubblewrap's, or the program's own), its environment and limits. The binary is
 // opened here, before the child gives up root: neither bubblewrap nor fexecve then needs a
-// path that the user nobody could follow. Returns an empty string or why it cannot start.
+// path that the sandbox's user could follow. Returns an empty string or why it cannot start.
 std::string prepare_launch(const std::vector<std::string>& argv, const std::string& cwd, const Limits& limits,
-                           Launch& l) {
-    l.namespaces = limits.isolate && mode == Isolation::namespaces;
-    l.as_nobody = limits.isolate && mode != Isolation::limits_only && geteuid() == 0;
-    if (l.namespaces || l.as_nobody) {
+                           const std::vector<int>& pass, Launch& l) {
+    const bool sandboxed = limits.sandbox != Sandbox::none;
+    l.namespaces = sandboxed && mode == Isolation::namespaces;
+    l.own_user = sandboxed && geteuid() == 0;
+    l.uid = sandbox_uid();
+    l.keep = pass;
+    const bool test = limits.sandbox == Sandbox::test;
+    if (test && (l.namespaces || l.own_user)) {
         l.program = open(argv[0].c_str(), O_RDONLY | O_CLOEXEC);
         if (l.program < 0) return "cannot open " + argv[0] + ": " + std::strerror(errno);
     }
     l.output = static_cast<rlim_t>(limits.output_bytes);
-    if (l.namespaces) {
+    const int binary_fd = 3 + static_cast<int>(pass.size());
+    if (l.namespaces && test) {
         const std::string name = argv[0].substr(argv[0].rfind('/') + 1);
-        l.command = bwrap_arguments(name, std::max<long>(limits.output_bytes * 4, 8L << 20), limits.output_bytes);
+        l.command = bwrap_test(name, std::max<long>(limits.output_bytes * 4, 8L << 20), binary_fd);
         l.command.push_back("/run/test/" + name);
         l.command.insert(l.command.end(), argv.begin() + 1, argv.end());
-        // Outside, the limit must let bubblewrap write the binary; inside, prlimit sets the real one.
+        // Outside, the limit must let bubblewrap write the binary; inside, the binary sets the real one.
         struct stat st {};
         if (fstat(l.program, &st) == 0) l.output = std::max(l.output, static_cast<rlim_t>(st.st_size) + (64 << 10));
+    } else if (l.namespaces) {
+        l.command = bwrap_build(limits);
+        l.command.insert(l.command.end(), argv.begin(), argv.end());
     } else {
         l.command = argv;
     }
     for (const auto& a : l.command) l.args.push_back(const_cast<char*>(a.c_str()));
     l.args.push_back(nullptr);
     const char* path = std::getenv("PATH");
-    const std::string home = l.namespaces ? "/work" : cwd;
+    const std::string home = l.namespaces ? (test ? "/work" : "/tmp") : cwd;
     l.environment = {std::string("PATH=") + (path ? path : "/usr/local/bin:/usr/bin:/bin"), "LC_ALL=C", "LANG=C",
                      "HOME=" + home, "TMPDIR=" + home};
+    if (test) l.environment.push_back("WORKBOOK_OUTPUT_LIMIT=" + std::to_string(limits.output_bytes));
     l.environment.insert(l.environment.end(), limits.environment.begin(), limits.environment.end());
     for (auto& e : l.environment) l.env.push_back(e.data());
     l.env.push_back(nullptr);
     l.cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
     l.memory = static_cast<rlim_t>(limits.memory_mb) << 20;
+    // Threads count as processes. With a user of its own, the limit counts this program alone:
+    // its main thread, the threads it may start, and bubblewrap's two processes.
+    if (test && l.own_user) l.processes = static_cast<rlim_t>(1 + limits.threads + (l.namespaces ? 2 : 0));
     return {};
 }
 
 // The pipes: `exec` reports a failed exec (it closes on a successful one); `channel`, with a
-// report, becomes fd 3 of the child.
+// report, becomes the child's descriptor after the passed ones.
 struct Pipes {
     int exec[2] = {-1, -1};
     int channel[2] = {-1, -1};
@@ -266,27 +282,29 @@ std::string open_pipes(bool with_report, Pipes& p) {
     _exit(127);
 }
 
-// Moves the descriptors the child keeps above fd 10, then into place: 0 from /dev/null, 1 and 2
-// into the output, 3 the report, 4 the binary for bubblewrap; closes every other one but the
-// binary (for fexecve). Returns the descriptor that reports a failed exec.
+// Moves the descriptors the child keeps above fd 100, then into place: 0 from /dev/null, 1 and
+// 2 into the output, 3, 4, ... the passed ones, then the report, then the binary for bubblewrap;
+// closes every other one but the binary (for fexecve). Returns the descriptor that reports a
+// failed exec.
 int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int out, int& program_copy) {
-    const int exec_report = fcntl(p.exec[1], F_DUPFD_CLOEXEC, 10);
-    const int report_end = with_report ? fcntl(p.channel[1], F_DUPFD_CLOEXEC, 10) : -1;
-    program_copy = l.program >= 0 ? fcntl(l.program, F_DUPFD_CLOEXEC, 10) : -1;
+    const int exec_report = fcntl(p.exec[1], F_DUPFD_CLOEXEC, 100);
+    std::vector<int> wanted;  // in the order of their final numbers 3, 4, ...
+    for (const int fd : l.keep) wanted.push_back(fcntl(fd, F_DUPFD_CLOEXEC, 100));
+    if (with_report) wanted.push_back(fcntl(p.channel[1], F_DUPFD_CLOEXEC, 100));
+    program_copy = l.program >= 0 ? fcntl(l.program, F_DUPFD_CLOEXEC, 100) : -1;
+    if (l.namespaces && program_copy >= 0) wanted.push_back(program_copy);  // bubblewrap reads it, then closes it
     dup2(in, 0);
     dup2(out, 1);
     dup2(out, 2);
-    if (with_report) dup2(report_end, 3);     // without O_CLOEXEC: the program keeps it
-    if (l.namespaces) dup2(program_copy, 4);  // bubblewrap reads it, then closes it
-    const int first_closed = l.namespaces ? 5 : with_report ? 4 : 3;
-    for (int fd = first_closed; fd < 1024; ++fd)
+    int next = 3;
+    for (const int fd : wanted) dup2(fd, next++);  // without O_CLOEXEC: the program keeps them
+    for (int fd = next; fd < 1024; ++fd)
         if (fd != exec_report && !(fd == program_copy && !l.namespaces)) close(fd);
-    if (!with_report && l.namespaces) close(3);
     return exec_report;
 }
 
 // The child: its own process group, dies with the harness, descriptors in place, default
-// signals, the limits, then the program (as nobody when asked).
+// signals, the limits, then the program (as the sandbox's own user when the harness is root).
 [[noreturn]] void run_child(const Launch& l, Pipes& p, bool with_report, pid_t parent, const std::string& cwd,
                             const std::string& output_path, const Limits& limits) {
     setpgid(0, 0);
@@ -306,17 +324,20 @@ int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int
     set_limit(RLIMIT_CPU, l.cpu, l.cpu + 1);
     set_limit(RLIMIT_FSIZE, l.output, l.output);
     set_limit(RLIMIT_CORE, 0, 0);
-    if (l.as_nobody && !drop_to_nobody()) exec_failed(report);
-    // In the namespaces, bubblewrap needs its own processes; the limit is set inside.
-    if (limits.forbid_processes && !l.namespaces) set_limit(RLIMIT_NPROC, 0, 0);
-    if (l.as_nobody && !l.namespaces)
+    const bool test = limits.sandbox == Sandbox::test;
+    const uid_t uid = test ? test_uid(getpid()) : l.uid;
+    if (l.own_user && test && !l.namespaces && chown(cwd.c_str(), uid, uid) != 0) exec_failed(report);
+    if (l.own_user && (setgroups(0, nullptr) != 0 || setgid(uid) != 0 || setuid(uid) != 0)) exec_failed(report);
+    if (l.processes > 0) set_limit(RLIMIT_NPROC, l.processes, l.processes);
+    if (limits.forbid_processes && limits.sandbox == Sandbox::none) set_limit(RLIMIT_NPROC, 0, 0);
+    if (l.own_user && !l.namespaces && program_copy >= 0)
         fexecve(program_copy, l.args.data(), l.env.data());
     else
         execve(l.args[0], l.args.data(), l.env.data());
     exec_failed(report);
 }
 
-// What the program writes to fd 3, kept up to `limit` bytes.
+// What the program writes to its report descriptor, kept up to `limit` bytes.
 struct ReportReader {
     int fd = -1;
     std::string* text = nullptr;
@@ -379,53 +400,96 @@ void record_end(int status, bool namespaces, Outcome& outcome) {
 
 }  // namespace
 
-Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
-                    const Limits& limits, std::string* report_text, std::size_t report_limit, bool* report_overflow) {
-    Outcome outcome;
-    if (report_overflow) *report_overflow = false;
-    if (report_text) report_text->clear();
+struct Started::Impl {
     Launch launch;
     Pipes pipes;
-    outcome.error = prepare_launch(argv, cwd, limits, launch);
-    if (outcome.error.empty()) outcome.error = open_pipes(report_text != nullptr, pipes);
-    if (!outcome.error.empty()) return outcome;
+    pid_t pid = -1;
+    std::chrono::steady_clock::time_point start;
+    double wall_seconds = 0;
+    bool with_report = false;
+    ReportReader report;
+    int exec_errno = 0;
+    bool exec_failed = false;
+};
+
+Started::Started() : impl(std::make_unique<Impl>()) {}
+Started::~Started() {
+    if (impl && impl->pid > 0) wait_limited(*this, 0);  // still running: stopped now
+}
+Started::Started(Started&&) noexcept = default;
+Started& Started::operator=(Started&&) noexcept = default;
+
+Started start_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
+                      const Limits& limits, const std::vector<int>& pass_fds, std::string* report_text,
+                      std::size_t report_limit, bool* report_overflow) {
+    Started s;
+    Started::Impl& r = *s.impl;
+    if (report_overflow) *report_overflow = false;
+    if (report_text) report_text->clear();
+    r.with_report = report_text != nullptr;
+    r.wall_seconds = limits.wall_seconds;
+    s.outcome.error = prepare_launch(argv, cwd, limits, pass_fds, r.launch);
+    if (s.outcome.error.empty()) s.outcome.error = open_pipes(r.with_report, r.pipes);
+    if (!s.outcome.error.empty()) return s;
     const pid_t parent = getpid();
-    const auto start = std::chrono::steady_clock::now();
+    r.start = std::chrono::steady_clock::now();
     const pid_t pid = fork();
     if (pid < 0) {
-        outcome.error = std::string("fork: ") + std::strerror(errno);
-        for (const int fd : {pipes.exec[0], pipes.exec[1], pipes.channel[0], pipes.channel[1]})
+        s.outcome.error = std::string("fork: ") + std::strerror(errno);
+        for (const int fd : {r.pipes.exec[0], r.pipes.exec[1], r.pipes.channel[0], r.pipes.channel[1]})
             if (fd >= 0) close(fd);
-        return outcome;
+        return s;
     }
-    if (pid == 0) run_child(launch, pipes, report_text != nullptr, parent, cwd, output_path, limits);
+    if (pid == 0) run_child(r.launch, r.pipes, r.with_report, parent, cwd, output_path, limits);
     setpgid(pid, pid);
-    running_group = pid;
-    close(pipes.exec[1]);
-    if (launch.program >= 0) close(launch.program), launch.program = -1;
-    const ReportReader report{pipes.channel[0], report_text, report_limit, report_overflow};
-    if (report_text) {
-        close(pipes.channel[1]);
-        fcntl(pipes.channel[0], F_SETFL, O_NONBLOCK);
+    r.pid = pid;
+    remember_group(pid, true);
+    close(r.pipes.exec[1]);
+    if (r.launch.program >= 0) close(r.launch.program), r.launch.program = -1;
+    r.report = ReportReader{r.pipes.channel[0], report_text, report_limit, report_overflow};
+    if (r.with_report) {
+        close(r.pipes.channel[1]);
+        fcntl(r.pipes.channel[0], F_SETFL, O_NONBLOCK);
     }
-    int exec_errno = 0;
-    const bool exec_failed = read(pipes.exec[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno;
-    close(pipes.exec[0]);
-    const int status =
-        wait_until(pid, start + std::chrono::duration<double>(limits.wall_seconds), report, &outcome.timed_out);
-    kill(-pid, SIGKILL);  // anything it left behind in its group
-    running_group = 0;
-    if (report_text) {
-        report.drain();
-        close(pipes.channel[0]);
+    r.exec_failed = read(r.pipes.exec[0], &r.exec_errno, sizeof r.exec_errno) == sizeof r.exec_errno;
+    close(r.pipes.exec[0]);
+    return s;
+}
+
+Outcome wait_limited(Started& s, double grace_seconds) {
+    Started::Impl& r = *s.impl;
+    if (r.pid <= 0) return s.outcome;
+    auto deadline = r.start + std::chrono::duration<double>(r.wall_seconds);
+    if (grace_seconds >= 0)
+        deadline = std::min(deadline, std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_seconds));
+    bool stopped = false;
+    const int status = wait_until(r.pid, deadline, r.report, &stopped);
+    // Stopped at its own deadline, it timed out; at the end of its grace, it was only stopped.
+    const bool own_deadline =
+        std::chrono::steady_clock::now() >= r.start + std::chrono::duration<double>(r.wall_seconds);
+    s.outcome.timed_out = stopped && own_deadline;
+    s.outcome.stopped = stopped && !own_deadline;
+    kill(-r.pid, SIGKILL);  // anything it left behind in its group
+    remember_group(r.pid, false);
+    if (r.with_report) {
+        r.report.drain();
+        close(r.pipes.channel[0]);
     }
-    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (exec_failed) {
-        outcome.error = "cannot run " + launch.command[0] + ": " + std::strerror(exec_errno);
-        return outcome;
+    s.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    r.pid = -1;
+    if (r.exec_failed) {
+        s.outcome.error = "cannot run " + r.launch.command[0] + ": " + std::strerror(r.exec_errno);
+        return s.outcome;
     }
-    record_end(status, launch.namespaces, outcome);
-    return outcome;
+    record_end(status, r.launch.namespaces, s.outcome);
+    return s.outcome;
+}
+
+Outcome run_limited(const std::vector<std::string>& argv, const std::string& cwd, const std::string& output_path,
+                    const Limits& limits, std::string* report_text, std::size_t report_limit, bool* report_overflow,
+                    const std::vector<int>& pass_fds) {
+    Started s = start_limited(argv, cwd, output_path, limits, pass_fds, report_text, report_limit, report_overflow);
+    return wait_limited(s);
 }
 
 }  // namespace grading

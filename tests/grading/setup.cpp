@@ -1,5 +1,6 @@
 // What is graded: the manifest (written at build time from the reference graders) and the
 // build facts (grading/topics.txt, written by CMake), read back by every grading run.
+#include <limits.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -14,9 +15,30 @@ namespace grading {
 
 namespace {
 
+// The file a path names, links followed: the build sandbox has /usr, not /etc/alternatives.
+std::string real_path(const std::string& path) {
+    char buffer[PATH_MAX];
+    return realpath(path.c_str(), buffer) ? std::string(buffer) : path;
+}
+
+// An include folder of the build's compile command, for a student's compile: the API's as the
+// build sandbox sees it (@API@), the system's as it is, nothing else (the compile sees only the API).
+void include_folder(const std::string& option, std::string folder, const std::string& root, const std::string& dir,
+                    std::vector<std::string>& out) {
+    if (!folder.empty() && folder[0] != '/' && !dir.empty()) folder = dir + "/" + folder;
+    if (starts_with(folder + "/", root + "/exercises/"))
+        folder = "@API@" + folder.substr(root.size());
+    else if (!starts_with(folder, "/usr/"))
+        return;
+    if (option == "-I")
+        out.push_back("-I" + folder);
+    else
+        out.push_back(option), out.push_back(folder);
+}
+
 // The compile command of <file> in compile_commands.json, made into a template.
-std::string compile_template(const std::string& compile_commands, const std::vector<std::string>& candidates,
-                             std::vector<std::string>& out) {
+std::string compile_template(const std::string& compile_commands, const std::string& root,
+                             const std::vector<std::string>& candidates, std::vector<std::string>& out) {
     bool ok = false;
     const std::string text = read_file(compile_commands, &ok);
     if (!ok) return "cannot read " + compile_commands + " (configure with CMAKE_EXPORT_COMPILE_COMMANDS=ON)";
@@ -37,7 +59,7 @@ std::string compile_template(const std::string& compile_commands, const std::vec
             for (std::size_t k = 0; k < words.size(); ++k) {
                 const std::string& w = words[k];
                 if (k == 0) {
-                    out.push_back(w);
+                    out.push_back(real_path(w));  // /usr/bin/c++ leads through /etc/alternatives
                 } else if (w == "-o" && k + 1 < words.size()) {
                     out.push_back("-o"), out.push_back("@OBJECT@"), ++k, have_object = true;
                 } else if (w == "-c" && k + 1 < words.size()) {
@@ -48,8 +70,10 @@ std::string compile_template(const std::string& compile_commands, const std::vec
                     // Warnings never fail a student's build; dependency files are not wanted.
                 } else if ((w == "-MT" || w == "-MF" || w == "-MQ") && k + 1 < words.size()) {
                     ++k;
-                } else if (starts_with(w, "-I") && w.size() > 2 && w[2] != '/' && !dir.empty()) {
-                    out.push_back("-I" + dir + "/" + w.substr(2));
+                } else if (starts_with(w, "-I") || w == "-isystem" || w == "-iquote") {
+                    const bool separate = w == "-isystem" || w == "-iquote";
+                    include_folder(separate ? w : "-I",
+                                   separate ? (k + 1 < words.size() ? words[++k] : "") : w.substr(2), root, dir, out);
                 } else {
                     out.push_back(w);
                 }
@@ -58,6 +82,9 @@ std::string compile_template(const std::string& compile_commands, const std::vec
                 out.clear();
                 return "the compile command of " + file + " in " + compile_commands + " has no -c or -o";
             }
+            // Tests come from the graders alone: doctest's macros define nothing in an exercise file
+            // (including doctest.h is honest; no doctest is linked into the student's process).
+            out.push_back("-DDOCTEST_CONFIG_DISABLE");
             out.push_back("-fdiagnostics-color=never");  // diagnostics only: the code is compiled as in the build
             out.push_back("-fmax-errors=20");
             return {};
@@ -68,7 +95,7 @@ std::string compile_template(const std::string& compile_commands, const std::vec
 
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
-    for (const char* folder : {"tests", "tests/grading", "tests/grading/replay", "exercises/rigid",
+    for (const char* folder : {"tests", "tests/grading", "tests/grading/remote", "exercises/rigid",
                                "exercises/provided/rigid", "solutions", "solutions/reference"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
@@ -252,7 +279,7 @@ void read_build_facts(const std::string& facts, Setup& setup, std::string& compi
         else if (f[0] == "build" && f.size() > 1)
             setup.build = f[1];
         else if (f[0] == "compiler" && f.size() > 1)
-            setup.compiler = f[1];
+            setup.compiler = real_path(f[1]);
         else if (f[0] == "nm" && f.size() > 1)
             setup.nm = f[1];
         else if (f[0] == "compile_commands" && f.size() > 1)
@@ -272,30 +299,39 @@ void read_build_facts(const std::string& facts, Setup& setup, std::string& compi
     }
 }
 
-// replay.txt: record and replay per topic (tests/grading/CMakeLists.txt). Returns an empty
-// string or the error.
-std::string read_replay_facts(const std::string& dir, std::map<std::string, Topic>& built) {
+// remote.txt: the judge and the student's side per topic (tests/grading/CMakeLists.txt). The
+// link inputs outside /usr (the student's side, the reference libraries of the dependencies)
+// become @LINK@/<name>, copied there when a run starts. Returns an empty string or the error.
+std::string read_remote_facts(const std::string& dir, Setup& setup, std::map<std::string, Topic>& built) {
     bool ok = false;
-    const std::string replay_facts = read_file(dir + "/replay.txt", &ok);
-    if (!ok) return "cannot read " + dir + "/replay.txt: build the target `grading` first";
+    const std::string facts = read_file(dir + "/remote.txt", &ok);
+    if (!ok) return "cannot read " + dir + "/remote.txt: build the target `grading` first";
+    std::map<std::string, std::string> names;  // path -> name under @LINK@
+    auto linked = [&](const std::string& item) -> std::string {
+        if (item.empty() || item[0] != '/' || starts_with(item, "/usr/")) return item;
+        if (!names.count(item)) {
+            const std::string name = std::to_string(names.size()) + "-" + item.substr(item.rfind('/') + 1);
+            names[item] = name;
+            setup.link_inputs.push_back({name, item});
+        }
+        return "@LINK@/" + names[item];
+    };
     std::string current;
-    for (const auto& line : split(replay_facts, '\n')) {
+    for (const auto& line : split(facts, '\n')) {
         const auto f = split(line, '\t');
         if (f[0] == "topic" && f.size() > 1)
             current = f[1];
         else if (current.empty() || !built.count(current))
             continue;
-        else if (f[0] == "replay" && f.size() > 1)
-            built[current].replay = f[1];
-        else if (f[0] == "recorder") {
+        else if (f[0] == "judge" && f.size() > 1)
+            built[current].judge = f[1];
+        else if (f[0] == "serve") {
+            std::vector<std::string> link;
             for (std::size_t k = 1; k < f.size(); ++k)
                 for (const auto& item : split(f[k], ';'))
-                    if (!item.empty()) built[current].recorder.push_back(item);
-        } else if (f[0] == "wrap" && f.size() > 1) {
-            bool have = false;
-            for (const auto& symbol : split(read_file(f[1], &have), '\n'))
-                if (!trim(symbol).empty()) built[current].wraps.push_back("-Wl,--wrap=" + trim(symbol));
-            if (!have) return "cannot read " + f[1] + ": build the target `grading` first";
+                    if (!item.empty()) link.push_back(linked(item));
+            for (const auto& item : built[current].link) link.push_back(linked(item));
+            built[current].link = link;
         }
     }
     return {};
@@ -316,12 +352,11 @@ std::string read_manifest(const std::string& dir, const std::string& compile_com
             t.test_file = f[3];
             std::vector<std::string> compile;
             const std::string problem = compile_template(
-                compile_commands,
+                compile_commands, setup.root,
                 {setup.root + "/exercises/" + t.name + ".cpp", setup.root + "/solutions/" + t.name + ".cpp"}, compile);
             if (!problem.empty()) return problem;
-            if (t.replay.empty() || t.recorder.empty() || t.wraps.empty())
-                return dir + "/replay.txt has no record and replay for " + t.name +
-                       ": build the target `grading` first";
+            if (t.judge.empty() || t.link.empty())
+                return dir + "/remote.txt has no judge for " + t.name + ": build the target `grading` first";
             t.compile = compile;
             setup.topics.push_back(t);
         } else if (f[0] == "exercise" && f.size() > 3 && !setup.topics.empty()) {
@@ -344,10 +379,6 @@ std::string instructor_fingerprint(const std::string& dir, const Setup& setup) {
         all += "\n";
     }
     for (const auto& w : setup.link_flags) all += w + " ";
-    for (const auto& t : setup.topics) {
-        for (const auto& w : t.wraps) all += w + " ";
-        all += "\n";
-    }
     Limits quick;
     quick.forbid_processes = false;
     const std::string version_file = dir + "/compiler-version." + std::to_string(getpid()) + ".txt";
@@ -371,7 +402,7 @@ std::string load_setup(const std::string& dir, Setup& setup) {
     std::string compile_commands;
     std::map<std::string, Topic> built;
     read_build_facts(facts, setup, compile_commands, built);
-    if (auto problem = read_replay_facts(dir, built); !problem.empty()) return problem;
+    if (auto problem = read_remote_facts(dir, setup, built); !problem.empty()) return problem;
     if (auto problem = read_manifest(dir, compile_commands, built, setup); !problem.empty()) return problem;
     setup.fingerprint = instructor_fingerprint(dir, setup);
     return {};

@@ -61,6 +61,10 @@ const char* usage =
     "  --assignment <name>    the column of canvas.csv and moodle.csv (default: Grioli workbook)\n"
     "  --force                grade again even when a result for the same inputs exists\n"
     "  --keep-work            keep each submission's build folder (<out>/.work/)\n"
+    "  --seed <n>             draw the graders' random inputs from this seed, not the public one\n"
+    "                         (recorded in run.json; students' check uses the public one)\n"
+    "  --unsafe               grade without a sandbox where there is none (no bubblewrap, not root):\n"
+    "                         students' code then runs as you, and can read and write what you can\n"
     "the mutation gate's (tests/grading/mutants/mutants.cpp):\n"
     "  --test-env NAME=VALUE  add to each test's environment (repeat it)\n"
     "  --object-cache <dir>   compile a file once for many gradings (keyed by source and command)\n";
@@ -86,7 +90,7 @@ struct Args {
     std::vector<std::string> positional;
     std::vector<std::string> only;  // as given: a name, or names joined by commas
     int jobs = 0;
-    bool force = false;
+    bool force = false, unsafe = false;
     Options options;
 };
 
@@ -116,7 +120,7 @@ bool limit_option(const std::string& o, const std::function<std::string()>& take
     return true;
 }
 
-Args parse(int argc, char** argv) {
+Args parse(int argc, char** argv) {  // argv: --seed's value is wiped once read
     Args a;
     for (int i = 2; i < argc; ++i) {
         const std::string o = argv[i];
@@ -151,7 +155,16 @@ Args parse(int argc, char** argv) {
             a.force = true;
         else if (o == "--keep-work")
             a.options.keep_work = true;
-        else if (limit_option(o, take, a.options))
+        else if (o == "--unsafe")
+            a.unsafe = true;
+        else if (o == "--seed") {
+            a.options.seed = take();
+            if (a.options.seed.empty() || a.options.seed.find_first_not_of("0123456789") != std::string::npos ||
+                a.options.seed.size() > 19)
+                std::fprintf(stderr, "workbook_grade: --seed needs a whole number (at most 19 digits)\n"), std::exit(2);
+            // Out of the command line that /proc shows to every user of the machine.
+            for (char* c = argv[i]; *c; ++c) *c = 'x';
+        } else if (limit_option(o, take, a.options))
             continue;
         else if (o == "-h" || o == "--help")
             std::printf("%s", usage), std::exit(0);
@@ -247,7 +260,7 @@ struct Item {
     std::vector<SubmittedFile> files;
     std::string fingerprint;
     bool resumed = false, graded = false, ok = false;
-    double seconds = 0, cpu = 0;
+    double seconds = 0;
     SubmissionResult result;
 };
 
@@ -303,7 +316,7 @@ std::vector<Item> collect_items(const Setup& setup, const Args& a, const std::st
         SubmissionResult previous;
         const std::string base = out + "/results/" + s;
         if (!a.force && read_results_tsv(base + ".tsv", previous) && previous.fingerprint == item.fingerprint &&
-            previous.json_hash == hex(hash(read_file(base + ".json")))) {
+            previous.seed == a.options.seed && previous.json_hash == hex(hash(read_file(base + ".json")))) {
             item.resumed = item.ok = true;
             item.result = previous;
         }
@@ -322,8 +335,8 @@ std::vector<Item> collect_items(const Setup& setup, const Args& a, const std::st
     const int mine = open((out + "/.locks/" + item.name).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (mine < 0 || flock(mine, LOCK_EX | LOCK_NB) != 0) _exit(3);
     const std::string work = out + "/.work/" + item.name + "." + std::to_string(getpid());
-    const SubmissionResult r =
-        grade_submission(setup, a.options, item.name, item.files, Selection{}, work, work + ".logs");
+    SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{}, work, work + ".logs");
+    r.seed = a.options.seed;
     const std::string base = out + "/results/" + item.name, logs = out + "/logs/" + item.name;
     remove_tree(logs);
     bool written = std::rename((work + ".logs").c_str(), logs.c_str()) == 0;
@@ -349,15 +362,14 @@ public:
             if (running_.empty()) return -1;
             if (stop_signal) return stop();
             int status = 0;
-            rusage usage{};
-            const pid_t pid = wait4(-1, &status, WNOHANG, &usage);
+            const pid_t pid = waitpid(-1, &status, WNOHANG);
             if (pid == 0) {
                 pollfd none{-1, 0, 0};
                 poll(&none, 0, 20);
             } else if (pid < 0) {
                 if (errno != EINTR) return -1;
             } else {
-                finished(pid, status, usage);
+                finished(pid, status);
             }
         }
     }
@@ -406,13 +418,11 @@ private:
     }
 
     // A worker ended: its time, and its result (or why there is none).
-    void finished(pid_t pid, int status, const rusage& usage) {
+    void finished(pid_t pid, int status) {
         const auto it = running_.find(pid);
         if (it == running_.end()) return;
         Item& item = items_[it->second.first];
         item.seconds = std::chrono::duration<double>(Clock::now() - it->second.second).count();
-        item.cpu =
-            usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
         running_.erase(it);
         item.graded = true;
         if (WIFEXITED(status) && WEXITSTATUS(status) == 3) {
@@ -462,24 +472,25 @@ private:
     std::size_t next_ = 0, done_ = 0;
 };
 
-// The totals on the terminal. Returns how many submissions this run graded.
+// The totals on the terminal. Returns how many submissions this run graded. (No CPU time: the
+// sandboxed compiles and tests are not the workers' children as the kernel counts CPU time.)
 int print_totals(const std::vector<Item>& items, double wall, int jobs) {
     int graded = 0;
-    double graded_wall = 0, graded_cpu = 0;
+    double graded_wall = 0;
     for (const auto& item : items)
-        if (item.graded) ++graded, graded_wall += item.seconds, graded_cpu += item.cpu;
+        if (item.graded) ++graded, graded_wall += item.seconds;
     std::printf("Graded %d submissions in %s s with %d jobs (%zu already graded)", graded, format_number(wall).c_str(),
                 jobs, items.size() - graded);
     if (graded)
-        std::printf(": %s s of wall time and %s s of CPU per submission, %s s per submission overall",
-                    format_number(graded_wall / graded).c_str(), format_number(graded_cpu / graded).c_str(),
-                    format_number(wall / graded).c_str());
+        std::printf(": %s s of wall time per submission, %s s per submission overall",
+                    format_number(graded_wall / graded).c_str(), format_number(wall / graded).c_str());
     std::printf("\n");
     return graded;
 }
 
 // run.json: timings and the date. They change from run to run, so they live apart from the results.
-void write_run_json(const std::string& out, const std::vector<Item>& items, int jobs, double wall, int graded) {
+void write_run_json(const std::string& out, const std::vector<Item>& items, int jobs, double wall, int graded,
+                    const std::string& seed) {
     char date[64];
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -489,11 +500,11 @@ void write_run_json(const std::string& out, const std::vector<Item>& items, int 
     for (const auto& item : items)
         runs.push_back({{"student", item.name},
                         {"graded_in_this_run", item.graded},
-                        {"wall_seconds", json_number(item.seconds)},
-                        {"cpu_seconds", json_number(item.cpu)}});
+                        {"wall_seconds", json_number(item.seconds)}});
     write_file(out + "/run.json", json_text({{"finished", date},
                                              {"host", host},
                                              {"jobs", jobs},
+                                             {"seed", seed.empty() ? "public" : seed},
                                              {"wall_seconds", json_number(wall)},
                                              {"graded", graded},
                                              {"already_graded", items.size() - static_cast<std::size_t>(graded)},
@@ -528,13 +539,23 @@ int grade(const Args& a) {
     for (const auto& t : setup.topics)
         for (const auto& e : t.exercises) tests += e.tests.size();
     const std::string sandbox = configure_sandbox();
-    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s)\n", students.size(),
-                submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str());
+    if (isolation() == Isolation::limits_only && !a.unsafe)
+        return fail(sandbox +
+                    ": refusing to grade, since students' code would run as you, able to read and write what you can "
+                    "(the workbook, the build, the results). Install bubblewrap or run as root; or, knowing that, "
+                    "pass --unsafe.");
+    std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s%s)\n", students.size(),
+                submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str(),
+                a.options.seed.empty() ? "; the public seed: pass --seed to draw inputs students have not seen" : "");
     std::fflush(stdout);
-    std::vector<Item> items = collect_items(setup, a, submissions, out, students);
+    Args staged = a;
+    if (const auto problem = make_stage(setup, staged.options.stage); !problem.empty()) return fail(problem);
+    std::vector<Item> items = collect_items(setup, staged, submissions, out, students);
     on_stop_signals();
     const auto start = std::chrono::steady_clock::now();
-    if (const int status = Pool(setup, a, out, items, jobs).run(); status >= 0) return status;
+    const int status = Pool(setup, staged, out, items, jobs).run();
+    remove_stage(staged.options.stage);
+    if (status >= 0) return status;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     rmdir((out + "/.work").c_str());  // when empty: other runs (shards) may still be working there
     const int graded = print_totals(items, wall, jobs);
@@ -543,7 +564,7 @@ int grade(const Args& a) {
         std::vector<ClassFiles> files;
         for (const auto& item : items) results.push_back(item.result), files.push_back({item.name, item.files});
         write_class_files(setup, a, out, results, files, ignored);
-        write_run_json(out, items, jobs, wall, graded);
+        write_run_json(out, items, jobs, wall, graded, a.options.seed);
         std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n",
                     out.c_str(), out.c_str(), out.c_str());
     }
@@ -596,8 +617,11 @@ int check(const Args& a) {
     if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0)
         return fail("another check is running in " + dir + "; wait for it to finish");
     const auto files = collect_files(setup, a.options, folder);
+    Options options = a.options;
+    if (const auto problem = make_stage(setup, options.stage); !problem.empty()) return fail(problem);
     const SubmissionResult r =
-        grade_submission(setup, a.options, "check", files, selection, dir + "/work", dir + "/logs");
+        grade_submission(setup, options, "check", files, selection, dir + "/work", dir + "/logs");
+    remove_stage(options.stage);
     write_file(dir + "/results.json", results_json(setup, r));
     const bool all = print_check(setup, r, relative_to_root(setup, folder));
     for (const auto& n : r.notes)

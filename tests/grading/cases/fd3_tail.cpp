@@ -1,6 +1,6 @@
-// case: writes the end of a passing doctest XML report to fd 3 (the harness's pipe), then _exit(0)
+// case: writes the end of a passing doctest XML report to fd 3 (the channel to the judge), then _exit(0)
 // replace: geodesic_angle
-// expect: geodesic_angle | fail | did not report completion
+// expect: geodesic_angle | fail | did not finish
 // score: geodesic_angle 0
 #include <unistd.h>
 namespace rigid {

@@ -1,6 +1,7 @@
-// case: brings its own passing TEST_CASEs with the graders' names, one faking their file by #line
+// case: brings its own passing TEST_CASEs with the graders' names, one faking their file by #line, and a wrong compose: exercise files are compiled with doctest disabled, so its tests are never even registered, and the graders' tests decide
 // replace: compose
-// expect: * | build error | must not define tests
+// expect: compose | fail | expected
+// score: compose 0
 #include <doctest/doctest.h>
 namespace rigid {
 AxisAngle compose(const AxisAngle& first, const AxisAngle&) { return first; }

@@ -1,4 +1,4 @@
-// case: a static initialiser puts its own pipe on fd 3 and, at exit, passes on what came through it with "false" rewritten as "true"
+// case: a static initialiser puts its own pipe on fd 3 and, at exit, passes on what came through it with "false" rewritten as "true", with a wrong lab_angular_velocity
 // replace: lab_angular_velocity
 // expect: lab_angular_velocity | fail | expected
 // score: lab_angular_velocity 0

@@ -15,7 +15,7 @@ int visible() {
     int found = 0;
     for (const char* path :
          {"@ROOT@/solutions/rotation.cpp", "@ROOT@/tests/rotation_test.cpp", "@BUILD@/graders/grade_rotation",
-          "@BUILD@/grading/replay/replay_rotation", "@BUILD@/grading/manifest.txt", "@OUT@/results/reference.json",
+          "@BUILD@/grading/judge/judge_rotation", "@BUILD@/grading/manifest.txt", "@OUT@/results/reference.json",
           "@OUT@/../submissions/reference/exercises/rotation.cpp", "/etc/passwd", "/root", "/tmp"})
         found += readable(path) || access(path, F_OK) == 0;
     // Only the sandbox's own processes: its init and this test.
@@ -28,7 +28,7 @@ int visible() {
     std::ifstream parent("/proc/" + std::to_string(getppid()) + "/cmdline");
     std::string text((std::istreambuf_iterator<char>(parent)), std::istreambuf_iterator<char>());
     found += text.find("@OUT@") != std::string::npos || text.find("workbook_grade") != std::string::npos;
-    found += getenv("WORKBOOK_RECORD") != nullptr;
+    found += getenv("WORKBOOK_SEED") != nullptr;
     return found;
 }
 }  // namespace

@@ -1,15 +1,15 @@
-// The record of one test: what the student's API functions returned for the grader's inputs,
-// written by the student's process (record.cpp) and read back by the trusted replay process
-// (replay.cpp). The design: README.md, "Grading a class", and record.hpp and replay.hpp here.
+// The wire between the two processes of a graded test (README: "Grading a class"): the
+// trusted judge, which runs the grader's doctest case, and the sandboxed student process,
+// which runs only the student's functions. Both sides are generated from the same API
+// signatures (tests/grading/api.cpp), so values travel as their raw bytes with no type tags:
+// a double keeps every bit, NaN included. The types are found by the compiler, not listed by
+// hand: numbers, bool, enums, std::string, Eigen matrices (fixed and dynamic), std::vector,
+// std::array, std::function, and any plain struct (an aggregate) of these, whose fields are
+// found by the usual structured-binding technique.
 //
-// Values are written exactly, as their raw bytes (a double keeps every bit, NaN included), with
-// no type tags: both sides know every type from the same generated signatures. The types are
-// found by the compiler, not listed by hand: numbers, bool, enums, std::string, Eigen matrices
-// (fixed and dynamic), std::vector, std::array, std::function, and any plain struct (an
-// aggregate) of these, whose fields are found by the usual structured-binding technique.
-//
-// Everything read is untrusted: every size is checked against what is left of the record
-// before anything is allocated, and a short or malformed record is an error, never a crash.
+// Everything read is untrusted: every size is checked in bytes against what is left of the
+// message before anything is allocated, and a short or malformed message is an error
+// (bad_message), never a crash.
 #pragma once
 
 #include <Eigen/Dense>
@@ -24,19 +24,25 @@
 #include <utility>
 #include <vector>
 
-namespace workbook_replay {
+namespace workbook_remote {
 
-// Event tags, one byte each.
+// A message is a frame: u32 length, then that many bytes, the first of them its tag.
 enum Tag : unsigned char {
-    tag_call = 'C',      // u32 function, u64 hash of the inputs: a call of an API function begins
+    // judge -> student
+    tag_call = 'C',             // u32 function, u32 frame, arguments: call an API function
+    tag_closure = 'K',          // u32 closure, u32 frame, arguments: call a callable the student returned
+    tag_callback_return = 'r',  // the value the grader's callable returned
+    tag_callback_throw = 'x',   // the exception that left the grader's callable
+    tag_quit = 'Q',             // the test case is over: end normally
+    // student -> judge
     tag_return = 'R',    // the value returned by the innermost open call
     tag_throw = 'X',     // the exception that left the innermost open call
-    tag_callback = 'B',  // u32 slot, arguments: the student called the grader's callable in that slot
-    tag_closure = 'K',   // u32 closure, u64 hash of the arguments: a returned callable is called
-    tag_end = 'E',       // the test case ended in the student's process
+    tag_callback = 'B',  // u32 frame, u32 slot, arguments: the student calls a callable the grader passed
+    tag_refuse = 'F',    // string: the student's runtime refuses what the submission did (why)
 };
 
-inline constexpr const char* magic = "WBREC1\n";
+inline constexpr std::uint32_t max_message = 256u << 20;   // one frame
+inline constexpr std::uint32_t no_callable = 0xFFFFFFFFu;  // an empty std::function
 
 // Exceptions, by the most derived standard type they are (rigid::not_implemented first).
 enum Kind : unsigned char {
@@ -58,15 +64,9 @@ enum Kind : unsigned char {
 inline constexpr std::uint32_t max_string = 1u << 16;     // an exception's message, a string field
 inline constexpr std::uint32_t max_dimension = 1u << 24;  // rows or columns of a matrix
 
-struct bad_record : std::runtime_error {
+struct bad_message : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-
-inline std::uint64_t fnv1a(const std::string& bytes) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-    return h;
-}
 
 // ---- type traits -------------------------------------------------------------------------
 template <class T>
@@ -190,10 +190,43 @@ struct Writer {
         } else if constexpr (std::is_aggregate_v<U>) {
             std::apply([this](const auto&... f) { (put(f), ...); }, fields(const_cast<U&>(v)));
         } else {
-            static_assert(sizeof(U) == 0, "a type in the API the record cannot write: extend serial.hpp");
+            static_assert(sizeof(U) == 0, "a type in the API the wire cannot write: extend wire.hpp");
         }
     }
 };
+
+// ---- sizes -------------------------------------------------------------------------------
+// The fewest bytes a value of type T takes on the wire: a list of n elements needs at least
+// n * wire_min<T>() bytes, which is checked before anything is allocated for it.
+template <class T>
+constexpr std::size_t wire_min();
+template <class Tuple, std::size_t... I>
+constexpr std::size_t fields_min(std::index_sequence<I...>) {
+    return (std::size_t(0) + ... + wire_min<std::remove_reference_t<std::tuple_element_t<I, Tuple>>>());
+}
+template <class T>
+constexpr std::size_t wire_min() {
+    using U = std::remove_cv_t<T>;
+    if constexpr (std::is_same_v<U, bool>)
+        return 1;
+    else if constexpr (std::is_arithmetic_v<U> || std::is_enum_v<U>)
+        return sizeof(U);
+    else if constexpr (std::is_same_v<U, std::string>)
+        return 4;
+    else if constexpr (is_matrix<U>::value)
+        return 8 + (U::SizeAtCompileTime == Eigen::Dynamic ? 0 : U::SizeAtCompileTime * sizeof(typename U::Scalar));
+    else if constexpr (is_vector<U>::value)
+        return 4;
+    else if constexpr (is_array<U>::value)
+        return std::tuple_size_v<U> * wire_min<typename U::value_type>();
+    else if constexpr (is_function<U>::value)
+        return 4;
+    else if constexpr (std::is_aggregate_v<U>)
+        return fields_min<decltype(fields(std::declval<U&>()))>(
+            std::make_index_sequence<std::tuple_size_v<decltype(fields(std::declval<U&>()))>>{});
+    else
+        return 1;
+}
 
 // ---- reading ------------------------------------------------------------------------------
 template <class Source>
@@ -204,7 +237,7 @@ struct Reader {
 
     std::size_t left() const { return in.size() - at; }
     void raw(void* p, std::size_t n) {
-        if (n > left()) throw bad_record("the record ends in the middle of a value");
+        if (n > left()) throw bad_message("the message ends in the middle of a value");
         std::memcpy(p, in.data() + at, n);
         at += n;
     }
@@ -220,7 +253,7 @@ struct Reader {
     }
     std::string string() {
         const std::uint32_t n = u32();
-        if (n > max_string || n > left()) throw bad_record("a string in the record is too long");
+        if (n > max_string || n > left()) throw bad_message("a string in the message is longer than the message");
         std::string s(in.data() + at, n);
         at += n;
         return s;
@@ -232,7 +265,7 @@ struct Reader {
         if constexpr (std::is_same_v<U, bool>) {
             unsigned char b;
             raw(&b, 1);
-            if (b > 1) throw bad_record("a bool in the record is neither 0 nor 1");
+            if (b > 1) throw bad_message("a bool in the message is neither 0 nor 1");
             v = b == 1;
         } else if constexpr (std::is_arithmetic_v<U> || std::is_enum_v<U>) {
             raw(&v, sizeof v);
@@ -242,15 +275,17 @@ struct Reader {
             const std::uint32_t rows = u32(), cols = u32();
             if ((U::RowsAtCompileTime != Eigen::Dynamic && rows != static_cast<std::uint32_t>(U::RowsAtCompileTime)) ||
                 (U::ColsAtCompileTime != Eigen::Dynamic && cols != static_cast<std::uint32_t>(U::ColsAtCompileTime)))
-                throw bad_record("a fixed-size matrix in the record has the wrong shape");
+                throw bad_message("a fixed-size matrix in the message has the wrong shape");
             if (rows > max_dimension || cols > max_dimension ||
                 std::uint64_t(rows) * cols * sizeof(typename U::Scalar) > left())
-                throw bad_record("a matrix in the record is larger than the record");
+                throw bad_message("a matrix in the message is larger than the message");
             v.resize(rows, cols);
             for (Eigen::Index k = 0; k < v.size(); ++k) get(v.data()[k]);
         } else if constexpr (is_vector<U>::value) {
+            // In bytes, before the allocation: n elements take at least n * wire_min bytes.
             const std::uint32_t n = u32();
-            if (n > left()) throw bad_record("a list in the record is longer than the record");
+            if (std::uint64_t(n) * wire_min<typename U::value_type>() > left())
+                throw bad_message("a list in the message is longer than the message");
             v.clear();
             v.resize(n);
             for (auto& x : v) get(x);
@@ -261,27 +296,19 @@ struct Reader {
         } else if constexpr (std::is_aggregate_v<U>) {
             std::apply([this](auto&... f) { (get(f), ...); }, fields(v));
         } else {
-            static_assert(sizeof(U) == 0, "a type in the API the record cannot read: extend serial.hpp");
+            static_assert(sizeof(U) == 0, "a type in the API the wire cannot read: extend wire.hpp");
         }
     }
 };
 
-// A sink for hashing inputs: a callable counts as its position only.
-struct HashSink {
+// Where no callable may travel (the arguments of a callback, a callback's result, the arguments
+// of a returned callable): a type with a std::function there stops the build, naming it.
+struct NoCallables {
     template <class W, class F>
-    void callable(W& w, const F&) {
-        w.u32(0xCA11AB1Eu);
+    void callable(W&, F&) {
+        static_assert(sizeof(F) == 0, "a callable inside a callback's arguments or result: extend wire.hpp");
     }
 };
-
-template <class... A>
-std::uint64_t hash_inputs(const A&... a) {
-    std::string bytes;
-    HashSink sink;
-    Writer<HashSink> w{bytes, sink};
-    (w.put(a), ...);
-    return fnv1a(bytes);
-}
 
 // The decayed argument types of a callable's call, as a tuple to read them into.
 template <class F>
@@ -292,4 +319,11 @@ struct signature<std::function<R(A...)>> {
     using arguments = std::tuple<std::decay_t<A>...>;
 };
 
-}  // namespace workbook_replay
+// Exceptions travel as their kind (the most derived standard type, rigid::not_implemented
+// first), what() and, for not_implemented, the function's name.
+struct Thrown {
+    Kind kind = k_unknown;
+    std::string what, extra;
+};
+
+}  // namespace workbook_remote
