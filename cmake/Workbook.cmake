@@ -372,6 +372,13 @@ function(workbook_contents)
   endforeach()
   list(TRANSFORM labels REPLACE "^(ch[0-9][0-9]).*" "\\1")
   set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST ${chapters})
+  # <build>/chapters.tsv: "NN<tab>folder" per chapter, for cmake/workbook (scenes NN).
+  set(tsv "")
+  foreach(ch IN LISTS chapters)
+    string(SUBSTRING "${ch}" 0 2 nn)
+    string(APPEND tsv "${nn}\t${ch}\n")
+  endforeach()
+  file(CONFIGURE OUTPUT "${CMAKE_BINARY_DIR}/chapters.tsv" CONTENT "${tsv}" @ONLY)
   set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LABELS ${labels})
   set_property(GLOBAL PROPERTY WORKBOOK_CONTENTS "${json}")
 endfunction()
@@ -417,6 +424,33 @@ function(workbook_main_job)
     DEPENDS ${scene_targets} book_tool
     USES_TERMINAL VERBATIM
     COMMENT "Running every scene: figures and reports in ${figures}, the error/run-time report in ${CMAKE_BINARY_DIR}/report")
+
+  # One target per chapter, scenes-NN: that chapter's scenes alone, run as `workbook` runs them
+  # (no book): what `cmake/workbook scenes NN` builds and runs on a student's own code.
+  get_property(chapters GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST)
+  foreach(ch IN LISTS chapters)
+    set(lines "")
+    set(targets "")
+    foreach(line IN LISTS scenes)
+      if(line MATCHES "^${ch}\\|([^|]+)\\|")
+        list(APPEND lines "${line}")
+        list(APPEND targets "${CMAKE_MATCH_1}")
+      endif()
+    endforeach()
+    if(NOT targets)
+      continue()
+    endif()
+    string(SUBSTRING "${ch}" 0 2 nn)
+    string(REPLACE ";" "\n" lines "${lines}")
+    file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/report/${ch}/scenes.txt" CONTENT "${lines}\n")
+    add_custom_target(scenes-${nn}
+      COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/${ch}/scenes.txt -DRUN=default
+              -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report/${ch} -DIMPL=${WORKBOOK_IMPL}
+              -P "${WORKBOOK_ROOT}/cmake/run_scenes.cmake"
+      DEPENDS ${targets}
+      USES_TERMINAL VERBATIM
+      COMMENT "Running the scenes of ${ch}: figures and reports in ${figures}/${ch}")
+  endforeach()
 
   get_property(extra GLOBAL PROPERTY WORKBOOK_EXTRA_RUNS)
   list(REMOVE_DUPLICATES extra)

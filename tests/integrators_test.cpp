@@ -33,6 +33,16 @@ TEST_SUITE("ch03_free_body") {
         }
     }
 
+    TEST_CASE(
+        "rk4_step: one step of y' = lambda y is the Taylor polynomial for random lambda, h, y (the graders' seed)") {
+        for (int n = 0; n < 20; ++n) {
+            const double lambda = checks::uniform(-3, 3), h = checks::uniform(0.01, 0.5), y0 = checks::uniform(-5, 5);
+            const double z = lambda * h, t = checks::uniform(-1, 1);
+            const VecX y = rigid::rk4_step([&](double, const VecX& x) { return VecX(lambda * x); }, t, VecX{{y0}}, h);
+            CHECK_NEAR(y(0), y0 * (1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24), 1e-13 * std::abs(y0));
+        }
+    }
+
     TEST_CASE("rk4_step: uses the time argument and is exact for y' = t^3") {
         // Simpson's rule inside RK4 integrates cubics exactly: y(t + h) - y(t) = ((t+h)^4 - t^4) / 4.
         const rigid::OdeRhs f = [](double t, const VecX&) { return VecX{{t * t * t}}; };
@@ -63,6 +73,20 @@ TEST_SUITE("ch03_free_body") {
         // ceil(0.25/0.1) + ceil(0.75/0.1) + ceil(0.1/0.1 + rounding) + ceil(1.9/0.1) steps.
         long expected = 0;
         for (std::size_t i = 1; i < times.size(); ++i) expected += long(std::ceil((times[i] - times[i - 1]) / 0.1));
+        CHECK(steps == expected);
+    }
+
+    TEST_CASE("integrate_rk4: lands on random output times and counts its steps (the graders' seed)") {
+        std::vector<double> times{checks::uniform(-1, 1)};
+        for (int i = 0; i < 5; ++i) times.push_back(times.back() + checks::uniform(0.05, 1));
+        const double h = checks::uniform(0.01, 0.1);
+        std::vector<double> seen;
+        const long steps = rigid::integrate_rk4(
+            oscillator, VecX{{1.0, 0.0}}, times, [&](double t, const VecX&) { seen.push_back(t); }, h);
+        REQUIRE(seen.size() == times.size());
+        for (std::size_t i = 0; i < times.size(); ++i) CHECK(seen[i] == times[i]);
+        long expected = 0;
+        for (std::size_t i = 1; i < times.size(); ++i) expected += long(std::ceil((times[i] - times[i - 1]) / h));
         CHECK(steps == expected);
     }
 

@@ -24,6 +24,7 @@ std::mt19937_64& rng() {
 // cannot pass although its checks may have, or an empty string.
 extern "C" const char* workbook_remote_verdict() __attribute__((weak));
 extern "C" unsigned long long workbook_remote_round_trips() __attribute__((weak));
+extern "C" unsigned long long workbook_remote_sent_hash() __attribute__((weak));
 
 namespace {
 
@@ -101,6 +102,7 @@ struct Verdicts : checks::Listener {
             const std::string problem = workbook_remote_verdict();
             j["remote"] = problem;
             j["round_trips"] = workbook_remote_round_trips ? workbook_remote_round_trips() : 0;
+            j["sent"] = workbook_remote_sent_hash ? workbook_remote_sent_hash() : 0;
             if (!problem.empty()) j["success"] = false;
         }
         emit(j);

@@ -8,7 +8,9 @@
 //   * nothing is wider than the content column (<main>'s content box) at a 1200 px wide
 //     window, and nothing hides part of itself: a code block, a table or an equation that does
 //     not fit must wrap, break or shrink, not scroll or be cut off. Each offender is named, with
-//     its page, its tag and its first words.
+//     its page, its tag and its first words;
+//   * at the common screen widths, 1024, 1280, 1366 and 1920 px, nothing of the page (the
+//     "On this page" sidebar included) extends past the window's left or right edge.
 // It also reports each page's height (HEIGHT <name> <px>), for the full-page screenshots. Then
 // it checks itself on a page that is broken on purpose: the checks must see the damage. The
 // result goes into <pre id="book-test-result">, one line per finding, ending with DONE.
@@ -18,10 +20,10 @@
 const lines = [];
 const say = (s) => lines.push(s);
 
-function load(url) {
+function load(url, width = 1200) {
   return new Promise((resolve) => {
     const frame = document.createElement("iframe");
-    frame.style.width = "1200px";
+    frame.style.width = width + "px";
     frame.style.height = "900px";
     const timer = setTimeout(() => resolve(null), 15000);
     frame.onload = () => {
@@ -117,6 +119,30 @@ function overflowProblems(doc) {
   return problems;
 }
 
+// Elements that extend past the window's left or right edge: what a reader of that width
+// cannot see (a sidebar whose first letters are cut off).
+function edgeProblems(doc, width) {
+  const problems = [];
+  const win = doc.defaultView;
+  const reported = [];
+  for (const el of doc.body.querySelectorAll("*")) {
+    if (el.closest("math") && el.tagName.toLowerCase() !== "math") continue;
+    if (reported.some((r) => r.contains(el))) continue;
+    const r = el.getBoundingClientRect();
+    if (r.width === 0 || r.height === 0) continue;
+    const style = win.getComputedStyle(el);
+    if (style.display === "none" || style.visibility === "hidden") continue;
+    if (r.left < -1 || r.right > win.innerWidth + 1) {
+      problems.push("at " + width + " px, past the window's " + (r.left < -1 ? "left" : "right") + " edge (" +
+                    Math.round(r.left) + " to " + Math.round(r.right) + " px of " + win.innerWidth + "): " + describe(el));
+      reported.push(el);
+    }
+  }
+  return problems;
+}
+
+const WIDTHS = [1024, 1280, 1366, 1920];
+
 function checkPage(name, doc, kind) {
   const problems = [];
   const win = doc.defaultView;
@@ -181,6 +207,12 @@ async function checkAll(pages) {
     r.page = p;
     results.set(p.url, r);
     frame.remove();
+    if (p.kind === "code") continue;  // source listings: a <pre> in the column, checked above
+    for (const width of WIDTHS) {
+      const wide = await load(p.url, width);
+      if (wide && wide.contentDocument) r.problems.push(...edgeProblems(wide.contentDocument, width));
+      if (wide) wide.remove();
+    }
   }
   for (const r of results.values()) {
     for (const l of r.links) {
@@ -222,6 +254,7 @@ async function checkAll(pages) {
       ["an equation wider than the column", /(wider than the content column|scrolls sideways) .*<math/],
       ["an image cut off", /cut off .*<div class=clip>/],
       ["a word too long for the column", /sticks out of the content column .*<h1>/],
+      ["a sidebar cut off at the left edge at 1280 px", /at 1280 px, past the window's left edge .*<nav class=toc>/],
     ]) {
       if (!pattern.test(self)) {
         say("FAIL self-test: the checks did not notice " + what + " on the broken page");

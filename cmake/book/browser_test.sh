@@ -70,6 +70,7 @@ cat >"$work/broken-on-purpose.html" <<'EOF'
 <table style="width: 1400px"><tr><td>a table wider than the column</td></tr></table>
 <math display="block"><mrow><mi>x</mi><mo>=</mo><mn>111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111111</mn></mrow></math>
 <h1 style="overflow-wrap: normal">Averyveryveryveryveryveryveryveryveryveryveryveryveryveryveryverylongwordthatcannotbreakanywhereatallinthiscolumn</h1>
+<nav class="toc" style="position: fixed; top: 4rem; left: -1.5rem; width: 14rem">On this page, cut off at the left edge</nav>
 <div class="clip" style="overflow: hidden; width: 300px"><img alt="" style="max-width: none; width: 900px; height: 20px" src="data:image/svg+xml;utf8,<svg xmlns='http://www.w3.org/2000/svg' width='900' height='20'/>"></div>
 </main></body></html>
 EOF

@@ -8,6 +8,11 @@
 //   * euler_rhs and poisson_rhs are pure formulas and do not check their input (they run
 //     millions of times inside an integrator). free_body_equations checks the moments once:
 //     finite, > 0 and obeying the triangle inequality (rigid::require_principal_moments).
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include "rigid/ode.hpp"

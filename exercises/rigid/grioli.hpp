@@ -14,6 +14,11 @@
 //     carries as numbers of their own, so that a nearly symmetric body keeps its digits:
 //     C - A = (B - A) + (C - B) and A + C - B = A + (C - B) have no cancellation.
 //   * Bad input throws std::invalid_argument naming the value and the rule it breaks.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include "rigid/heavy_top.hpp"

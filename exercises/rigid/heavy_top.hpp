@@ -15,6 +15,11 @@
 //     Omega(t) = alpha a + beta R^a(alpha t)^T b [P, (1.5)].
 //   * Bad input (a non-symmetric or non-positive J, f <= 0, a zero or non-finite vector,
 //     ...) throws std::invalid_argument naming the value and the rule.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include "rigid/ode.hpp"

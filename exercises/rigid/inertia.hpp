@@ -16,6 +16,11 @@
 //     the rule broken, as do the checks of require_body below.
 //   * [P] writes alpha in (5.10) for an auxiliary number of this section; it is NOT the
 //     frequency alpha of Theorem 1. This file calls it alpha_510 where it needs it.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include <array>

@@ -11,6 +11,11 @@
 //   * The splitting functions (free_rotation, strang_step) need J diagonal: the body axes are the
 //     principal axes (this is how every scene of the chapter sets up its bodies). They do not
 //     check it, nor anything else: they run millions of times.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include "rigid/heavy_top.hpp"

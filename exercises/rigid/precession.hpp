@@ -9,6 +9,11 @@
 //     and > 0. [P] also asks a and b not to be collinear; the functions here do not need it
 //     (collinear a, b give a pure rotation, and a circle of radius 0).
 //   * Bad input throws std::invalid_argument naming the value and the rule.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include <vector>

@@ -17,6 +17,11 @@
 //   * Bad input throws std::invalid_argument naming the rule (the require_* functions below):
 //     m, omega, kappa, E0 finite and > 0; p finite and >= 1; B finite and non-zero; e/mc
 //     finite, of either sign (the sign of the charge); beta finite and >= 0.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include <cmath>

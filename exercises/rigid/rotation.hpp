@@ -10,6 +10,11 @@
 //     vee is its inverse, the map [P, (1.1.1)] uses: Omega_k = -1/2 eps_kij W_ij.
 //   * Functions that take an axis accept any finite non-zero vector and normalise it; a zero
 //     or non-finite axis, or a non-finite angle, throws std::invalid_argument naming it.
+//
+// How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
+// process of their own, which keeps its state between the calls of one test; the grader runs in
+// another. Threads are allowed (up to 16 besides the main one); starting a process or another
+// program is not.
 #pragma once
 
 #include "rigid/types.hpp"

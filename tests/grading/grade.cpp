@@ -33,7 +33,7 @@ std::string indent(const std::string& text, const std::string& prefix) {
 struct Said {
     bool started = false, ended = false, success = false;
     int failed_checks = 0;
-    unsigned long long round_trips = 0;
+    unsigned long long round_trips = 0, sent = 0;
     std::string remote, exception, first_failure;
 };
 
@@ -74,6 +74,7 @@ Said read_verdict(const Setup& setup, const std::string& lines, const std::strin
             said.failed_checks = j.value("failed_checks", 0);
             said.remote = j.value("remote", "");
             said.round_trips = j.value("round_trips", 0ULL);
+            said.sent = j.value("sent", 0ULL);
             inside = false;
         }
     }
@@ -270,7 +271,8 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
     all << setup.fingerprint << "\n"
         << selection << "\n"
         << options.test_limits.wall_seconds << " " << options.test_limits.memory_mb << " "
-        << options.test_limits.output_bytes << " " << options.build_limits.wall_seconds << " "
+        << options.test_limits.output_bytes << " " << options.test_limits.threads << " "
+        << options.build_limits.wall_seconds << " "
         << options.build_limits.memory_mb << " " << options.max_file_bytes << "\n";
     for (const auto& e : options.test_environment) all << "env " << e << "\n";
     for (const auto& f : files)
@@ -455,12 +457,13 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
     const Test& test = exercise.tests[k];
     const TestRun pair = run_pair(g, topic, binary, test);
     Run r = decide(g.setup, pair.student, pair.judged, pair.verdicts, test, g.options);
-    // The cost of the test: its wall time and its round trips between the two processes
-    // (logs/<student>/timing.tsv; not in the results, which must not change from run to run).
+    // The cost of the test: its wall time and its round trips between the two processes, and a
+    // hash of the inputs the judge sent (logs/<student>/timing.tsv; not in the results, which
+    // must not change from run to run).
     if (!g.log_dir.empty()) {
         const Said said = read_verdict(g.setup, pair.verdicts, test.name);
-        char line[64];
-        std::snprintf(line, sizeof line, "\t%.4f\t%llu\n", pair.judged.seconds, said.round_trips);
+        char line[96];
+        std::snprintf(line, sizeof line, "\t%.4f\t%llu\t%016llx\n", pair.judged.seconds, said.round_trips, said.sent);
         const std::string timing = g.log_dir + "/timing.tsv";
         write_file(timing, read_file(timing) + test.name + "\t" + r.verdict + line);
     }

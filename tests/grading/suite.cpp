@@ -24,6 +24,7 @@
 #include <cstring>
 #include <ctime>
 #include <map>
+#include <set>
 
 #include "grading.hpp"
 
@@ -391,6 +392,52 @@ void check_seeded(Suite& s, std::vector<Row>& rows) {
     }
 }
 
+// The exercises none of whose tests sent other inputs under another seed, from two timing logs
+// (test name -> hash of the inputs sent; logs/<student>/timing.tsv): they have no test on seeded
+// inputs, and a table of the public answers would earn them.
+std::set<std::string> unseeded_exercises(const std::map<std::string, std::string>& one,
+                                         const std::map<std::string, std::string>& other) {
+    std::map<std::string, bool> seeded;
+    for (const auto& [test, sent] : one) {
+        const std::string exercise = test.substr(0, test.find(':'));
+        const auto it = other.find(test);
+        seeded[exercise] = seeded[exercise] || (it != other.end() && it->second != sent);
+    }
+    std::set<std::string> out;
+    for (const auto& [exercise, yes] : seeded)
+        if (!yes) out.insert(exercise);
+    return out;
+}
+
+std::map<std::string, std::string> sent_per_test(const std::string& timing) {
+    std::map<std::string, std::string> out;
+    for (const auto& line : split(read_file(timing), '\n')) {
+        const auto f = split(line, '\t');
+        if (f.size() >= 5) out[f[0]] = f[4];
+    }
+    return out;
+}
+
+// Every exercise has a test on seeded inputs: the reference graded with the public seed and with
+// --seed sent other inputs in some test of each. The check is proved on a planted pair first.
+void check_every_exercise_seeded(Suite& s) {
+    const std::set<std::string> planted =
+        unseeded_exercises({{"hat: random", "1"}, {"hat: fixed", "2"}, {"vee: fixed", "3"}},
+                           {{"hat: random", "9"}, {"hat: fixed", "2"}, {"vee: fixed", "3"}});
+    if (planted != std::set<std::string>{"vee"})
+        s.problems.push_back("the seeded-inputs check does not flag an exercise whose tests all send the same inputs");
+    const auto one = sent_per_test(s.out + "/logs/reference/timing.tsv");
+    const auto other = sent_per_test(s.a.work + "/out-seeded/logs/reference/timing.tsv");
+    if (one.empty() || other.empty()) return s.problems.push_back("no timing logs of the reference to compare seeds");
+    for (const auto& exercise : unseeded_exercises(one, other))
+        s.problems.push_back("the exercise " + exercise +
+                             " has no test on seeded inputs: a table of the public answers would earn it");
+    std::set<std::string> exercises;
+    for (const auto& [test, sent] : one) exercises.insert(test.substr(0, test.find(':')));
+    std::printf("== Every one of the %zu exercises has a test whose inputs follow the seed (%zu tests compared)\n",
+                exercises.size(), one.size());
+}
+
 // A file only the suite's user may read, whose content no result and no log may ever hold
 // (compile_secret.cpp reads it at compile time).
 void plant_secret(Suite& s) {
@@ -572,6 +619,7 @@ int main(int argc, char** argv) {
     check_student_check(s);
     check_interrupted(s);
     check_seeded(s, rows);
+    check_every_exercise_seeded(s);
     find_secret(s, s.a.work);
     // Nothing rewrote a result after it was written (a process that outlived its test, say).
     for (const auto& [name, text] : written)

@@ -53,6 +53,7 @@ const char* usage =
     "  --timeout <s>          wall-clock limit of each test (default 10)\n"
     "  --memory <MB>          address space of each test (default 1024)\n"
     "  --output-limit <KB>    what each test may write (default 1024)\n"
+    "  --threads <n>          threads a test may start besides its main one, as root (default 16)\n"
     "  --build-timeout <s>    limit of each compile and link (default 120)\n"
     "  --build-memory <MB>    address space of the compiler (default 4096)\n"
     "  --max-file-size <KB>   largest exercise file taken from a submission (default 1024)\n"
@@ -102,6 +103,8 @@ bool limit_option(const std::string& o, const std::function<std::string()>& take
         options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
     else if (o == "--output-limit")
         options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
+    else if (o == "--threads")
+        options.test_limits.threads = static_cast<int>(number(o, take().c_str()));
     else if (o == "--build-timeout")
         options.build_limits.wall_seconds = number(o, take().c_str());
     else if (o == "--build-memory")

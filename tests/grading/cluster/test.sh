@@ -11,7 +11,7 @@
 # README's GNU parallel commands, with the local machine as the only host (`:`, so no ssh).
 # Both check every result, the class files, the similarity report and the LMS files
 # (grading_class check), and that the final run graded nothing itself. The commands are taken
-# from README.md (the blocks after "<!-- run by tests/grading/cluster/test.sh ... -->"), so
+# from tests/grading/README.md (the blocks after "<!-- run by tests/grading/cluster/test.sh ... -->"), so
 # the README says exactly what this runs. Slurm grades the class of 30, GNU parallel 10 of them.
 # Exits 77 (skipped) with the reason when an engine
 # cannot start here: Slurm needs root.
@@ -36,8 +36,8 @@ recipe() {
     $0 == m { found = 1; next }
     found && !inside && /^```sh$/ { inside = 1; next }
     inside && /^```$/ { exit }
-    inside { print }' "$root/README.md")
-  [[ -n $text ]] || fail "README.md has no block marked '$1'"
+    inside { print }' "$root/tests/grading/README.md")
+  [[ -n $text ]] || fail "tests/grading/README.md has no block marked '$1'"
   printf '%s\n' "$text"
 }
 

@@ -13,6 +13,7 @@ namespace {
 struct State {
     std::uint32_t calls = 0;  // API calls and calls of returned callables
     std::uint64_t callbacks = 0;
+    std::uint64_t sent = 0xcbf29ce484222325ULL;  // FNV-1a of every byte sent to the student
     std::string problem;
     std::deque<Frame> frames;
 };
@@ -48,6 +49,8 @@ const std::string& problem() { return state().problem; }
 
 std::uint64_t round_trips() { return state().calls + state().callbacks; }
 
+std::uint64_t sent_hash() { return state().sent; }
+
 std::uint32_t next_call_number() { return ++state().calls; }
 
 std::deque<Frame>& frames() { return state().frames; }
@@ -58,6 +61,7 @@ Channel& channel() {
 }
 
 void send(const std::string& message, const std::string& what) {
+    for (const char c : message) state().sent = (state().sent ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
     if (!channel().send(message))
         fail(what + ": the submission's process is gone (it ended before this call: exit, a crash or the time limit)");
 }
@@ -118,6 +122,11 @@ void answer_callback(const std::string& message, const std::string& what) {
 // Asked by the verdict reporter (tests/main.cpp) when the test case ends: the messages that went
 // both ways (each a round trip), for the run's timing log.
 extern "C" unsigned long long workbook_remote_round_trips() { return workbook_remote::judge::round_trips(); }
+
+// The same: a hash of every input the judge sent the student's process. Two runs whose inputs
+// differ (the graders' seed) give two hashes: how the suite proves every exercise has a test
+// on seeded inputs.
+extern "C" unsigned long long workbook_remote_sent_hash() { return workbook_remote::judge::sent_hash(); }
 
 // Asked by the verdict reporter (tests/main.cpp) when the test case ends: empty, or why the
 // test cannot pass although its checks may have.

@@ -36,6 +36,7 @@ extern const std::uint32_t api_count;
 bool failed();
 const std::string& problem();  // the first problem found in this test case, or empty
 std::uint64_t round_trips();   // calls sent and callbacks answered in this test case
+std::uint64_t sent_hash();     // of every byte sent to the student's process in this test case
 std::uint32_t next_call_number();
 
 // One open call: the grader's callables passed in it, each as an invoker that reads the
