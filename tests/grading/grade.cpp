@@ -272,8 +272,8 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
         << selection << "\n"
         << options.test_limits.wall_seconds << " " << options.test_limits.memory_mb << " "
         << options.test_limits.output_bytes << " " << options.test_limits.threads << " "
-        << options.build_limits.wall_seconds << " "
-        << options.build_limits.memory_mb << " " << options.max_file_bytes << "\n";
+        << options.build_limits.wall_seconds << " " << options.build_limits.memory_mb << " " << options.max_file_bytes
+        << "\n";
     for (const auto& e : options.test_environment) all << "env " << e << "\n";
     for (const auto& f : files)
         all << f.topic << " " << f.state << " " << f.reason << " " << hex(hash(f.content)) << "\n";
@@ -362,9 +362,15 @@ Outcome link(const Grading& g, const Topic& topic, const std::string& job, const
     const View view = view_of(g.options.stage, job);
     std::vector<std::string> command = {g.setup.compiler};
     command.insert(command.end(), g.setup.link_flags.begin(), g.setup.link_flags.end());
-    command.push_back(view.submission + "/obj/" + topic.name + ".o");
+    // The student's side of the API first: its .preinit_array entry (the seccomp filter) then
+    // comes before any the student's object could bring, and runs first. Then the student's
+    // object, then the libraries.
     const auto inputs = fill(topic.link, view, "", "");
-    command.insert(command.end(), inputs.begin(), inputs.end());
+    for (const auto& input : inputs)
+        if (ends_with(input, ".o")) command.push_back(input);
+    command.push_back(view.submission + "/obj/" + topic.name + ".o");
+    for (const auto& input : inputs)
+        if (!ends_with(input, ".o")) command.push_back(input);
     command.push_back("-o");
     command.push_back(view.submission + "/bin/serve_" + topic.name);
     return run_limited(command, job, log, build_limits(g, job));

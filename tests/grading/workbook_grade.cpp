@@ -501,9 +501,8 @@ void write_run_json(const std::string& out, const std::vector<Item>& items, int 
     gethostname(host, sizeof host - 1);
     nlohmann::ordered_json runs = nlohmann::ordered_json::array();
     for (const auto& item : items)
-        runs.push_back({{"student", item.name},
-                        {"graded_in_this_run", item.graded},
-                        {"wall_seconds", json_number(item.seconds)}});
+        runs.push_back(
+            {{"student", item.name}, {"graded_in_this_run", item.graded}, {"wall_seconds", json_number(item.seconds)}});
     write_file(out + "/run.json", json_text({{"finished", date},
                                              {"host", host},
                                              {"jobs", jobs},
