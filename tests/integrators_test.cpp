@@ -34,7 +34,8 @@ TEST_SUITE("ch03_free_body") {
     }
 
     TEST_CASE(
-        "rk4_step: one step of y' = lambda y is the Taylor polynomial for random lambda, h, y (the graders' seed)") {
+        "rk4_step: one step of y' = lambda y is the Taylor polynomial for random lambda and h and y (the graders' "
+        "seed)") {
         for (int n = 0; n < 20; ++n) {
             const double lambda = checks::uniform(-3, 3), h = checks::uniform(0.01, 0.5), y0 = checks::uniform(-5, 5);
             const double z = lambda * h, t = checks::uniform(-1, 1);

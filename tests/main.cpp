@@ -83,7 +83,10 @@ struct Verdicts : checks::Listener {
 
     void report_query(const doctest::QueryData& q) override {
         for (unsigned i = 0; i < q.num_data; ++i)
-            emit({{"test", q.data[i]->m_name}, {"file", text(q.data[i]->m_file)}, {"line", q.data[i]->m_line}});
+            emit({{"test", q.data[i]->m_name},
+                  {"file", text(q.data[i]->m_file)},
+                  {"line", q.data[i]->m_line},
+                  {"timeout", q.data[i]->m_timeout}});
     }
     void test_run_end(const doctest::TestRunStats& st) override {
         emit({{"event", "run"}, {"cases", st.numTestCasesPassingFilters}, {"failed", st.numTestCasesFailed}});

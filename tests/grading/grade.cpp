@@ -436,12 +436,16 @@ TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary
         return r;
     }
     Limits limits = g.options.test_limits;
+    // A grader that says it needs longer (doctest::timeout) gets it: the heaviest makes 197,511
+    // calls of the student's function, a few seconds on a busy machine.
+    limits.wall_seconds = std::max(limits.wall_seconds, test.seconds);
     limits.sandbox = Sandbox::test;
     limits.environment.insert(limits.environment.end(), g.options.test_environment.begin(),
                               g.options.test_environment.end());
     Started student = start_limited({binary}, run_dir, work_dir + "/logs/output.txt", limits, {pair[0], shared});
     close(pair[0]);
     Limits judge = g.options.test_limits;
+    judge.wall_seconds = limits.wall_seconds;
     judge.memory_mb += 512;  // the messages themselves, up to 256 MiB each
     judge.environment = {};
     if (!g.options.seed.empty()) judge.environment.push_back("WORKBOOK_SEED=" + g.options.seed);
@@ -462,7 +466,9 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
                     const Exercise& exercise, std::size_t k) {
     const Test& test = exercise.tests[k];
     const TestRun pair = run_pair(g, topic, binary, test);
-    Run r = decide(g.setup, pair.student, pair.judged, pair.verdicts, test, g.options);
+    Options options = g.options;  // the limit the messages name: this test's
+    options.test_limits.wall_seconds = std::max(options.test_limits.wall_seconds, test.seconds);
+    Run r = decide(g.setup, pair.student, pair.judged, pair.verdicts, test, options);
     // The cost of the test: its wall time and its round trips between the two processes, and a
     // hash of the inputs the judge sent (logs/<student>/timing.tsv; not in the results, which
     // must not change from run to run).

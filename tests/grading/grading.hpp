@@ -127,6 +127,7 @@ void stop_children_on_signal();
 struct Test {
     std::string name;
     int line = 0;
+    double seconds = 0;  // the time the grader says it needs (doctest::timeout), if more than --timeout
 };
 
 struct Exercise {

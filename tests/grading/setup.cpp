@@ -201,7 +201,7 @@ std::string list_exercises(const Listed& t, const std::string& root, const std::
             exercises.push_back({exercise, 1, {}});
             e = &exercises.back();
         }
-        e->tests.push_back({name, j.value("line", 0)});
+        e->tests.push_back({name, j.value("line", 0), j.value("timeout", 0.0)});
     }
     if (exercises.empty()) return t.reference + " lists no tests from " + test_file;
     return {};
@@ -255,7 +255,8 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
             if (points.count(e.name)) p = points[e.name], used[e.name] = true;
             out += "exercise\t" + t.topic + "\t" + e.name + "\t" + format_number(p) + "\n";
             for (const auto& test : e.tests)
-                out += "test\t" + t.topic + "\t" + e.name + "\t" + std::to_string(test.line) + "\t" + test.name + "\n";
+                out += "test\t" + t.topic + "\t" + e.name + "\t" + std::to_string(test.line) + "\t" + test.name +
+                       (test.seconds > 0 ? "\t" + format_number(test.seconds) : "") + "\n";
         }
     }
     for (const auto& [name, was_used] : used)
@@ -362,7 +363,8 @@ std::string read_manifest(const std::string& dir, const std::string& compile_com
         } else if (f[0] == "exercise" && f.size() > 3 && !setup.topics.empty()) {
             setup.topics.back().exercises.push_back({f[2], std::stod(f[3]), {}});
         } else if (f[0] == "test" && f.size() > 4 && !setup.topics.empty() && !setup.topics.back().exercises.empty()) {
-            setup.topics.back().exercises.back().tests.push_back({f[4], std::stoi(f[3])});
+            setup.topics.back().exercises.back().tests.push_back(
+                {f[4], std::stoi(f[3]), f.size() > 5 ? std::stod(f[5]) : 0.0});
         }
     }
     if (setup.topics.empty()) return dir + "/manifest.txt lists no topics";

@@ -1,9 +1,9 @@
 // The channel between the judge and the student's process. The two take turns strictly: one
 // sends a message, then waits for the other's. A message goes through a mailbox in memory the
 // two share (file descriptor 4 in both, made by the harness for this test), and the one waiting
-// yields the CPU a while before it sleeps on a futex: a call of a student's function costs 1 to
-// 6 us (see wait()), where a socket costs 14 to 77 us (measured here; a grader makes up to
-// 200,000 calls in one test).
+// spins briefly before it sleeps on a futex: a call of a student's function costs 2.5 us on an
+// idle machine and 8 to 15 us beside CPU hogs (see wait()), where a socket costs 21 us across
+// the heaviest grader's 197,511 calls (measured here; a grader makes up to 200,000 in a test).
 // A message larger than the mailbox goes on the socket (file descriptor 3), which is also how
 // each side learns that the other has ended: the socket is closed.
 //
@@ -13,7 +13,6 @@
 
 #include <linux/futex.h>
 #include <poll.h>
-#include <sched.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
 #include <sys/syscall.h>
@@ -135,24 +134,34 @@ public:
     }
 
 private:
-    // Until the other side has sent a message (true) or has closed the socket (false): first up
-    // to 100 yields of the CPU (the other side may be waiting for it), then sleeps of 10 ms on the
-    // futex, looking at the socket between them. Measured here, a round trip costs 1 to 1.5 us
-    // on an idle machine, 6 us with the other CPU busy and with two tests at once, where a spin
-    // without yields costs 62 us with two tests at once.
+    // Until the other side has sent a message (true) or has closed the socket (false): a spin
+    // of 3,000 pauses (tens of microseconds: an answer that comes that soon is read at once),
+    // then sleeps of 10 ms on the futex, looking at the socket between them. The heaviest grader
+    // (197,511 round trips) took, measured here: 0.5 s on an idle machine, 1.5 to 1.9 s with
+    // two CPU hogs beside it, 2.7 to 3.1 s with four; waiting by sched_yield instead took 0.6 s
+    // idle but 10 to 15 s beside two hogs (each yield hands a hog its whole time slice), pure
+    // futex sleeps 0.7 to 1.9 s idle and about 3 s beside two, a socket 4.2 s idle.
     bool wait(Mailbox& in) {
         for (unsigned k = 0;; ++k) {
             if (in.sequence.load(std::memory_order_acquire) != seen_) break;
-            if (k < 100) {
-                sched_yield();
+            if (k < 3000) {
+                pause();
                 continue;
             }
-            const timespec pause{0, 10'000'000};
-            ::syscall(SYS_futex, &in.sequence, FUTEX_WAIT, seen_, &pause, nullptr, 0);
+            const timespec sleep{0, 10'000'000};
+            ::syscall(SYS_futex, &in.sequence, FUTEX_WAIT, seen_, &sleep, nullptr, 0);
             if (in.sequence.load(std::memory_order_acquire) == seen_ && detail::socket_closed()) return false;
         }
         seen_ = in.sequence.load(std::memory_order_acquire);
         return true;
+    }
+
+    static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause();
+#elif defined(__aarch64__)
+        __asm__ volatile("yield");
+#endif
     }
 
     bool judge_;
