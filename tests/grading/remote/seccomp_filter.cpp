@@ -26,8 +26,14 @@ int main(int argc, char** argv) {
     int bad = 0;
     for (const int call : {SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(execve), SCMP_SYS(execveat)})
         bad |= seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), call, 0);
-    bad |=
-        seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, 0));
+    // clone's flags (argument 0) without CLONE_THREAD. Spelled out, not with SCMP_A0: that macro is
+    // a C99 compound literal, which C++ compilers with -Wpedantic refuse.
+    scmp_arg_cmp no_thread{};
+    no_thread.arg = 0;
+    no_thread.op = SCMP_CMP_MASKED_EQ;
+    no_thread.datum_a = CLONE_THREAD;
+    no_thread.datum_b = 0;
+    bad |= seccomp_rule_add_array(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, &no_thread);
     bad |= seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
     const int fd = memfd_create("filter", 0);
     if (bad != 0 || fd < 0 || seccomp_export_bpf(ctx, fd) != 0) {
