@@ -512,6 +512,8 @@ function(workbook_book)
            COMMAND snippets --check "${root}")
   add_test(NAME "book: the code the prose names exists"
            COMMAND snippets --check-names "${root}")
+  add_test(NAME "book: every number that looks measured is a value marker or says what it is, every section named by number is a link"
+           COMMAND snippets --check-numbers "${root}")
   add_test(NAME "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
            COMMAND book_tool --check-structure "${root}" --contents "${contents}")
   add_test(NAME "book: every number in the prose is its run's committed value, and the scenes still report it"
@@ -535,6 +537,7 @@ function(workbook_book)
   set_tests_properties(
     "book: every code snippet in the prose matches its source"
     "book: the code the prose names exists"
+    "book: every number that looks measured is a value marker or says what it is, every section named by number is a link"
     "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
     "book: every number in the prose is its run's committed value, and the scenes still report it"
     "book: renders to HTML with MathML, its figures and no broken link"

@@ -53,9 +53,11 @@ inline rigid::OdeRhs with_work(const rigid::Oscillator& osc, const rigid::LevelF
 // is E / m, so when k changes little in a period, dE/dt = -k(E) q'^2 becomes
 //   dE/dt = -k(E) E / m.
 // Near a level E_n = n E0 > 0, with d = E - E_n and k ~ kappa (pi |d| / E0)^p, it is
-//   dd/dt = -c |d|^p sign(d),   c = kappa (pi / E0)^p E_n / m,
-// so a level is approached from above like d = ((p - 1) c t)^(-1/(p-1)) (p > 1; d = 1/(c t)
-// for p = 2) or like exp(-c t) (p = 1), and left from below just as fast.
+//   dd/dt = -c |d|^p,   c = kappa (pi / E0)^p E_n / m,
+// on both sides of the level (k >= 0, so E never rises): above it (d > 0) |d| shrinks, below it
+// (d < 0) |d| grows at the same rate. A level is approached from above like
+// d = ((p - 1) c t)^(-1/(p-1)) (p > 1; d = 1/(c t) for p = 2) or like exp(-c t) (p = 1), and
+// left from below by the mirror law: |d| = 1/(1/|d(0)| - c t) for p = 2, |d(0)| exp(c t) for p = 1.
 inline rigid::OdeRhs averaged_energy(const rigid::Oscillator& osc, const rigid::LevelFriction& k) {
     return [osc, k](double, const VecX& E) { return VecX{{-rigid::level_friction(k, E(0)) * E(0) / osc.m}}; };
 }

@@ -148,6 +148,14 @@ options <!-- value: mini_scene.error run=long fmt=%.0e -->1e-09<!-- end value --
 
 Math that pandoc cannot read: $\unknowncmd{x}$.
 
+Numbers: an untagged 3.4e-15, a tagged <!--P-->0.2122 and an exact <!--exact-->$\sqrt{2}/2 = 0.7071$; a
+hand value within its tolerance <!-- value: mini_scene.error run=default tol=0.01 -->1.5e-3<!-- end value -->
+and one that drifted <!-- value: mini_scene.by_case[order=1].error run=default tol=1e-5 -->0.4999<!-- end value -->;
+a tag of a kind that does not exist <!--guess-->1.234, a measurement by hand <!--once-->12.34 in a chapter, and
+a tag <!--input:2-->that covers 2.5e-3 and then nothing.
+
+As section 1.2 showed, and [section 1.2](#13-the-end) too.
+
 ![A figure that was never drawn.](../../figures/01_mini/none.svg)
 
 See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
@@ -192,8 +200,15 @@ check("snippets --check-names"
          "no grader's test name starts with 'nosuchtest:'" "mini_scene has no option --beta"
          "runs the scene 'lost_scene'"
   COMMAND "${SNIPPETS}" --check-names "${tree}")
+check("snippets --check-numbers"
+  EXPECT "01_mini/README.md:[0-9]+: 3.4e-15 looks measured" "'<!--guess-->' is no kind of number"
+         "1.234 looks measured" "<!--once--> \\(measured once, by hand\\) belongs in the manuals"
+         "the tag <!--input--> has 1 number\\(s\\) left" "'section 1.2' is not a link"
+         "names section 1.2 but does not lead to its heading"
+  COMMAND "${SNIPPETS}" --check-numbers "${tree}")
 check("snippets --check-values"
-  EXPECT "has no key 'no_such_key'" "has no row with order = 3" "has no run 'quick' \\(declared: default, long\\)"
+  EXPECT "the hand value 0.4999 is 0.0001 from the run's 0.5 "
+         "has no key 'no_such_key'" "has no row with order = 3" "has no run 'quick' \\(declared: default, long\\)"
          "comes from the run 'long' with --long no, but the run 'long' of mini_scene is declared with --long yes"
          "'mini_scene.not_measured' is -1 in the run 'default'" "'mini_scene.not_finite' is null"
          "'mini_scene.fastest' is \"none\"" "the text says '0.002', its committed report [^ ]+ says '0.0015'"
@@ -220,7 +235,7 @@ check("book --render"
   EXPECT "has no key 'no_such_key'" "the figure figures/01_mini/none.svg does not exist"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
          "'mini_scene.not_measured' is -1 in the run 'default'" "has no run 'quick'"
-         "comes from the run 'long' with --long no"
+         "comes from the run 'long' with --long no" "the hand value 0.4999 is 0.0001 from the run's 0.5"
   COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict
           --contents "${tree}/contents.json")
 check("book --check-figures"

@@ -531,6 +531,7 @@ private:
     std::string preprocess(const Page& page);
     std::string figure_html(const Page& page, const std::smatch& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
+    std::string hand_value_html(const prose::ValueMarker& v, const prose::Json* report);
     std::string motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion);
     std::string motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
                              const std::string& path, int motion, const std::string& where);
@@ -730,6 +731,7 @@ std::string Book::value_html(const prose::ValueMarker& v) {
         }
     }
     ++page_values_;
+    if (v.tol >= 0) return hand_value_html(v, report ? report : committed_.report(*d));
     if (report) {
         ++values_shown_;
         shown = "<span class=\"value\" title=\"" + html_escape(v.path) + ", run " + v.run +
@@ -755,6 +757,18 @@ std::string Book::value_html(const prose::ValueMarker& v) {
                 ": no report of this run; the text committed with the prose\">" + v.text + "</span>";
     }
     return shown;
+}
+
+// A value typed by hand (tol=): its own text, checked against the report the book reads.
+std::string Book::hand_value_html(const prose::ValueMarker& v, const prose::Json* report) {
+    if (!report) throw std::runtime_error("a hand value with no report of its run to check it against");
+    const std::string off = prose::hand_value_problem(v, *report);
+    if (!off.empty()) throw std::runtime_error(off);
+    ++values_shown_;
+    prose::ValueMarker exact = v;
+    exact.fmt = "%.6g";
+    return "<span class=\"value hand\" title=\"" + html_escape(v.path) + ", run " + v.run +
+           ": typed by hand; the run gives " + html_escape(prose::resolve(exact, *report)) + "\">" + v.text + "</span>";
 }
 
 std::string Book::preprocess(const Page& page) {

@@ -24,6 +24,22 @@
 // `by_stencil[0].best_h` picks row 0. F is a printf format for one number (%.2g, %.3e, %.0f, %d)
 // or sciN: N significant digits as 8.2×10⁻¹² (readable on GitHub and in the book alike). S
 // multiplies first (1e9: s -> ns). Markers inside code (fenced blocks, `code spans`) are text.
+// With tol=T the TEXT is a number typed by hand (a worked example done on paper, a value in a
+// table): --update never rewrites it, and every check fails when it is further than T, relative,
+// from the run's value, so a hand value can never drift from what the run computes.
+//
+// Every other number in the prose that looks measured (one in scientific notation whose mantissa
+// is not 1, as 3.6e-13, 3.6×10⁻¹³ or 3.6\times10^{-13}; a decimal with four or more significant
+// digits, as 0.2122) says what it is, with a tag in front of it:
+//     <!--exact-->0.7071    exact, or worked by hand from exact inputs
+//     <!--input-->2.5e-3    an input, an option or a tolerance the reader can set
+//     <!--const-->2.2e-16   a constant (of the machine, of nature, of a library)
+//     <!--P-->0.2122        quoted from [P]
+//     <!--once-->129.5      measured once by hand, as the sentence says where (the manuals only,
+//                           never a chapter)
+// A tag covers the next number; <!--P:3--> the next three, in the same paragraph (a tag with
+// numbers left at a blank line is stale). Numbers in code, in value markers and in link targets
+// are not prose.
 //
 // Where a run's report is: <tree>/<chapter>/<scene>.json for the default run and
 // <tree>/<chapter>/<run>/<scene>.json for a named one, next to the figures that run drew. The
@@ -224,6 +240,7 @@ struct ValueMarker {
     std::size_t text_begin = 0, text_end = 0;
     std::string path, run, fmt = "%.3g", text;
     double scale = 1;
+    double tol = -1;    // tol=T: TEXT is typed by hand and checked, |TEXT - value| <= T |value|
     std::string error;  // a malformed marker says why
 
     std::string scene() const { return path.substr(0, path.find_first_of(".[")); }
@@ -274,8 +291,13 @@ inline std::vector<ValueMarker> find_value_markers(const std::string& line) {
                 static const std::regex ok(R"([a-z][a-z0-9_]*)");
                 if (!std::regex_match(val, ok)) v.error = "run=" + val + ": a run's name is lower case, digits and _";
                 v.run = val;
+            } else if (key == "tol") {
+                char* end = nullptr;
+                v.tol = std::strtod(val.c_str(), &end);
+                if (end == val.c_str() || *end != '\0' || !(v.tol >= 0 && v.tol < 1))
+                    v.error = "tol=" + val + ": a relative tolerance, from 0 to below 1";
             } else {
-                v.error = "unknown option '" + key + "' (known: run, fmt, scale)";
+                v.error = "unknown option '" + key + "' (known: run, fmt, scale, tol)";
             }
         }
         if (v.error.empty() && v.run.empty())
@@ -529,6 +551,113 @@ inline std::string resolve(const ValueMarker& v, const Json& report) {
         return text;
     }
     throw std::runtime_error("'" + v.path + "' is not a number");
+}
+
+// ------------------------------------------------------------------------------ numbers
+
+// A number of the prose that looks measured (see the top of this file): where it is on its line.
+struct ProseNumber {
+    std::size_t begin = 0, end = 0;
+    std::string text;
+};
+
+// The significant digits of a decimal mantissa: 0.002120 has 4.
+inline int significant_digits(const std::string& mantissa) {
+    std::string d;
+    for (char c : mantissa)
+        if (c != '.') d += c;
+    const auto first = d.find_first_not_of('0');
+    return first == std::string::npos ? 0 : static_cast<int>(d.size() - first);
+}
+
+// The numbers of `line` that look measured, outside the characters `skip` marks (code spans,
+// markers, comments, link targets). A number inside a word (rk4, x1.5) or a dotted version
+// (3.20.1) is not one.
+inline std::vector<ProseNumber> measured_numbers(const std::string& line, const std::vector<bool>& skip) {
+    static const std::regex number(
+        R"((\d+(?:\.\d+)?|\.\d+)((?:[eE][-+]?\d+)|(?:(?:\s|\\,|\\;|\\!)*(?:\\times|×|\\cdot|·)(?:\s|\\,|\\;|\\!)*)"
+        R"(10(?:\^\{?(?:-|−)?\d+\}?|(?:⁻|⁺)?(?:⁰|¹|²|³|⁴|⁵|⁶|⁷|⁸|⁹)+)))?)");
+    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    std::vector<ProseNumber> out;
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), number); it != std::sregex_iterator(); ++it) {
+        const auto b = static_cast<std::size_t>(it->position(0)), e = b + static_cast<std::size_t>(it->length(0));
+        if (skip[b]) continue;
+        if (b > 0 && (word(line[b - 1]) || line[b - 1] == '.')) continue;
+        if (e < line.size() && (word(line[e]) || (line[e] == '.' && e + 1 < line.size() &&
+                                                  std::isdigit(static_cast<unsigned char>(line[e + 1])))))
+            continue;
+        const std::string mantissa = (*it)[1];
+        const bool scientific = (*it)[2].matched;
+        const bool measured = scientific ? mantissa != "1" && mantissa != "1.0"
+                                         : mantissa.find('.') != std::string::npos && significant_digits(mantissa) >= 4;
+        if (measured) out.push_back({b, e, it->str()});
+    }
+    return out;
+}
+
+// A tag that says what the next numbers are: <!--exact-->, <!--P:3-->, ...
+struct NumberTag {
+    std::size_t begin = 0, end = 0;
+    std::string kind;
+    int count = 1;
+    std::string error;
+};
+
+inline const std::vector<std::string>& number_kinds() {
+    static const std::vector<std::string> kinds{"exact", "input", "const", "P", "once"};
+    return kinds;
+}
+
+// The tags of one line: every comment that is one word, with an optional :count.
+inline std::vector<NumberTag> find_number_tags(const std::string& line) {
+    static const std::regex tag(R"(<!--\s*([A-Za-z]+)(?::([0-9]+))?\s*-->)");
+    const auto& kinds = number_kinds();
+    std::vector<NumberTag> out;
+    const auto mask = code_span_mask(line);
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), tag); it != std::sregex_iterator(); ++it) {
+        NumberTag t;
+        t.begin = static_cast<std::size_t>(it->position(0));
+        if (mask[t.begin]) continue;
+        t.end = t.begin + static_cast<std::size_t>(it->length(0));
+        t.kind = (*it)[1];
+        if ((*it)[2].matched) t.count = std::stoi((*it)[2]);
+        if (std::find(kinds.begin(), kinds.end(), t.kind) == kinds.end())
+            t.error = "'" + it->str() + "' is no kind of number (exact, input, const, P, once)";
+        else if (t.count < 1)
+            t.error = "'" + it->str() + "' covers no number";
+        out.push_back(t);
+    }
+    return out;
+}
+
+// The number a hand value's text states: 0.212157, -3.6e-13, 3.6×10⁻¹³, −0.5.
+inline std::optional<double> parse_number(std::string text) {
+    static const std::vector<std::pair<std::string, std::string>> swaps{
+        {"−", "-"}, {"×10", "e"}, {"⁻", "-"}, {"⁺", ""},  {"⁰", "0"}, {"¹", "1"}, {"²", "2"},
+        {"³", "3"}, {"⁴", "4"},   {"⁵", "5"}, {"⁶", "6"}, {"⁷", "7"}, {"⁸", "8"}, {"⁹", "9"}};
+    for (const auto& [from, to] : swaps)
+        for (std::size_t at; (at = text.find(from)) != std::string::npos;) text.replace(at, from.size(), to);
+    if (text.rfind("10", 0) == 0 && text.size() > 2 && text[2] == '-') text = "1e" + text.substr(2);
+    char* end = nullptr;
+    const double x = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(x)) return std::nullopt;
+    return x;
+}
+
+// A hand value (tol=) against the run's `report`: empty when it is within its tolerance, else
+// what differs. Throws as resolve() does.
+inline std::string hand_value_problem(const ValueMarker& v, const Json& report) {
+    ValueMarker exact = v;
+    exact.fmt = "%.17g";
+    const double run = std::strtod(resolve(exact, report).c_str(), nullptr);
+    const auto typed = parse_number(v.text);
+    if (!typed) return "the hand value '" + v.text + "' is not a number";
+    const double gap = std::abs(*typed - run), allowed = v.tol * std::abs(run);
+    if (gap <= allowed) return "";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "the hand value %s is %.2g from the run's %.10g (relative %.2g, tol=%g)",
+                  v.text.c_str(), gap, run, run != 0 ? gap / std::abs(run) : gap, v.tol);
+    return buf;
 }
 
 }  // namespace prose
