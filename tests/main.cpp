@@ -111,7 +111,13 @@ struct Verdicts : checks::Listener {
         emit(j);
     }
     void test_case_exception(const doctest::TestCaseException& e) override {
-        emit({{"event", "exception"}, {"text", text(e.error_string)}, {"crash", e.is_crash}});
+        // The INFO lines in scope where it was thrown (doctest keeps them while the stack unwinds):
+        // ALSO_USES names the other exercises the test called, which may be the ones that threw.
+        nlohmann::json info = nlohmann::json::array();
+        const int n = get_num_stringified_contexts();
+        const doctest::String* all = get_stringified_contexts();
+        for (int i = n - 1; i >= 0; --i) info.push_back(text(all[i]));
+        emit({{"event", "exception"}, {"text", text(e.error_string)}, {"crash", e.is_crash}, {"info", info}});
     }
     void log_assert(const doctest::AssertData& a) override {
         if (!a.m_failed) return;

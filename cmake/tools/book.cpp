@@ -27,9 +27,12 @@
 // chapter is a lesson: it has, in this order, the sections "## Before you start", "## Learning
 // objectives" (3-6 bullets, then a line starting "**Time:**"), "## Worked example", "## Exercises"
 // (naming the exercises/ file and at least one exercise marked "(derivation)"), "## Check your
-// work" (with `cmake/workbook check` and a scene command), "## Going further" and "## Checking
-// [P]", and at least three <details> blocks whose <summary> starts with "Predict:", each naming a
-// command to run. Every row of chapters/errata.md names a chapter and gives numbers.
+// work" (with `cmake/workbook check` and a scene command), "## Key points" (3-5 bullets: the
+// objectives restated as facts), "## Going further" and, last, "## Checking [P]": a pointer of
+// at most 3 lines to the chapter's own checking.md (which exists), where checking [P] and the
+// chapter's errata live; and at least three <details> blocks whose <summary> starts with
+// "Predict:", each naming a command to run. Every row of chapters/errata.md names a chapter and
+// gives numbers.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -133,6 +136,9 @@ public:
     int bullets = 0;               // of Learning objectives, before **Time:**
     bool time_line = false, derivation = false, names_file = false, check_cmd = false, scene_cmd = false;
     int predicts = 0, predicts_with_command = 0;  // <details> blocks whose summary starts "Predict:"
+    int key_points = 0;                           // bullets of Key points
+    int checking_lines = 0;                       // non-blank lines of Checking [P] and after it
+    bool checking_link = false;                   // Checking [P] links checking.md
 
     void line(const std::string& l) {
         const std::string section = h2s.empty() ? "" : h2s.back();
@@ -153,6 +159,12 @@ public:
         if (section == "Learning objectives") {
             if (!time_line && (l.rfind("* ", 0) == 0 || l.rfind("- ", 0) == 0)) ++bullets;
             if (l.rfind("**Time:**", 0) == 0) time_line = true;
+        }
+        if (section == "Key points" && (l.rfind("* ", 0) == 0 || l.rfind("- ", 0) == 0)) ++key_points;
+        if (std::find(h2s.begin(), h2s.end(), "Checking [P]") != h2s.end() &&
+            l.find_first_not_of(" \t") != std::string::npos) {
+            ++checking_lines;
+            if (l.find("](checking.md") != std::string::npos) checking_link = true;
         }
         if (section == "Exercises") {
             if (l.find("(derivation)") != std::string::npos) derivation = true;
@@ -184,8 +196,9 @@ private:
 // Each required section present and in order, opening with Before you start, Learning objectives.
 void check_lesson_order(const std::vector<std::string>& h2s, const std::string& name,
                         std::vector<std::string>& problems) {
-    const std::vector<std::string> required = {"Before you start", "Learning objectives", "Worked example", "Exercises",
-                                               "Check your work",  "Going further",       "Checking [P]"};
+    const std::vector<std::string> required = {"Before you start", "Learning objectives", "Worked example",
+                                               "Exercises",        "Check your work",     "Key points",
+                                               "Going further",    "Checking [P]"};
     std::size_t at = 0;
     for (const auto& h : required) {
         const auto it = std::find(h2s.begin(), h2s.end(), h);
@@ -198,9 +211,13 @@ void check_lesson_order(const std::vector<std::string>& h2s, const std::string& 
             problems.push_back(name + ": '## " + h +
                                "' comes too early (the order is: Before you start, "
                                "Learning objectives, ..., Worked example, ..., Exercises, Check your work, "
-                               "Going further, Checking [P])");
+                               "Key points, Going further, Checking [P])");
         at = std::max(at, pos);
     }
+    if (!h2s.empty() && std::find(h2s.begin(), h2s.end(), "Checking [P]") != h2s.end() && h2s.back() != "Checking [P]")
+        problems.push_back(name + ": '## " + h2s.back() +
+                           "' comes after '## Checking [P]', which is the page's last section (its errata and "
+                           "checks of [P] belong on checking.md)");
     if (h2s.empty() || h2s.front() != "Before you start")
         problems.push_back(name + ": its first section is not '## Before you start'");
     else if (h2s.size() < 2 || h2s[1] != "Learning objectives")
@@ -223,6 +240,14 @@ void check_lesson(const fs::path& md, const std::string& name, std::vector<std::
         problems.push_back(name + ": " + std::to_string(s.predicts - s.predicts_with_command) +
                            " of its Predict: blocks name no command to run (a build/... or cmake/workbook line)");
     if (!s.derivation) problems.push_back(name + ": its Exercises list no exercise marked '(derivation)'");
+    if (s.key_points < 3 || s.key_points > 5)
+        problems.push_back(name + ": its Key points have " + std::to_string(s.key_points) + " bullets; 3 to 5, please");
+    if (s.checking_lines > 3)
+        problems.push_back(name + ": its Checking [P] has " + std::to_string(s.checking_lines) +
+                           " lines; keep at most 3 there, a pointer to checking.md, and the checks on that page");
+    if (!s.checking_link) problems.push_back(name + ": its Checking [P] does not link checking.md");
+    if (!fs::exists(md.parent_path() / "checking.md"))
+        problems.push_back(name + ": the chapter has no checking.md (its own page for checking [P] and the errata)");
     if (!s.names_file)
         problems.push_back(name + ": its Exercises do not say where to work (no exercises/... file named)");
     if (!s.check_cmd) problems.push_back(name + ": its Check your work does not use 'cmake/workbook check'");
@@ -338,7 +363,7 @@ int check_structure(const fs::path& root) {
     const int rows = check_errata(root, chapters, problems);
     std::cout << chapters.size()
               << " chapters checked as lessons (objectives, worked example, predictions, a derivation, Check your "
-                 "work, Going further, Checking [P]); the notation page; "
+                 "work, Key points, Going further, Checking [P] on its own page); the notation page; "
               << rows << " rows of chapters/errata.md checked\n";
     for (const auto& p : problems) std::cout << "  " << p << "\n";
     return problems.empty() ? 0 : 1;
@@ -810,6 +835,10 @@ std::string Book::preprocess(const Page& page) {
             md += figure_html(page, m, ++figure);
             continue;
         }
+        // The number tags (<!--exact--> ...) are for the check of numbers, not for the reader; at
+        // the start of a line pandoc would take one for an HTML block and leave the line's math as text.
+        const auto tags = prose::find_number_tags(line);
+        for (auto t = tags.rbegin(); t != tags.rend(); ++t) line.erase(t->begin, t->end - t->begin);
         auto markers = prose::find_value_markers(line);
         for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
             std::string shown;

@@ -48,7 +48,7 @@ Vec3 precession_lab_angular_velocity(const RegularPrecession& p, double t);
 // snippet: precession_constants
 // |Omega(t)|^2, constant in time. [P, (1.6)] prints (alpha + beta)^2; direct evaluation of
 // (1.5) gives alpha^2 + beta^2 + 2 alpha beta (a, b), which is what this returns (the two
-// agree only for (a, b) = 1, collinear a and b: see the chapter's Errata).          [P, (1.6)]
+// agree only for (a, b) = 1, collinear a and b: see the chapter's checking.md). [P, (1.6)]
 double precession_omega_squared(const RegularPrecession& p);
 
 // (a, Omega(t)) = alpha + beta (a, b), constant in time                              [P, (1.7)]

@@ -14,9 +14,9 @@ target_link_libraries(test_hints PRIVATE doctest::doctest)
 workbook_warnings(test_hints)
 
 set(hints_file "${WORKBOOK_ROOT}/exercises/hints.md")
-add_test(NAME "hints: the reader, the terminal printer and the nudge rule catch planted bad hints and malformed files"
+add_test(NAME "hints: the reader, the terminal printer and the code rule catch planted bad hints and malformed files"
          COMMAND test_hints)
-add_test(NAME "hints: every graded exercise has a ladder of 2-3 levels, no TeX left in the terminal, no code in Hint 1"
+add_test(NAME "hints: every graded exercise has a ladder of 2-3 levels, no TeX left in the terminal, no code in any rung"
          COMMAND workbook_hints lint "${hints_file}" --manifest "${CMAKE_BINARY_DIR}/grading/manifest.txt")
 # `cmake/workbook check <exercise> --hint N` ends in this command: each level, and a clear refusal.
 add_test(NAME "hints: --hint N shows level N of the ladder and refuses a level the ladder does not have"
@@ -28,8 +28,8 @@ add_test(NAME "hints: --hint N shows level N of the ladder and refuses a level t
            if out=$("$1" show "$2" no_such_exercise 1 2>&1); then exit 1; fi
            grep -q "no hints for 'no_such_exercise'" <<<"$out"]=]
                  hints-show $<TARGET_FILE:workbook_hints> "${hints_file}")
-set_tests_properties("hints: the reader, the terminal printer and the nudge rule catch planted bad hints and malformed files"
-                     "hints: every graded exercise has a ladder of 2-3 levels, no TeX left in the terminal, no code in Hint 1"
+set_tests_properties("hints: the reader, the terminal printer and the code rule catch planted bad hints and malformed files"
+                     "hints: every graded exercise has a ladder of 2-3 levels, no TeX left in the terminal, no code in any rung"
                      "hints: --hint N shows level N of the ladder and refuses a level the ladder does not have"
                      PROPERTIES LABELS hints TIMEOUT 60)
 

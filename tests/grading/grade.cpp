@@ -67,7 +67,10 @@ Said read_verdict(const Setup& setup, const std::string& lines, const std::strin
             said.first_failure = relative_to_root(setup, j.value("file", "")) + ":" +
                                  std::to_string(j.value("line", 0)) + ": " + j.value("text", "") + "\n";
         } else if (event == "exception") {
-            said.exception = j.value("text", "");
+            said.exception = j.value("text", "") + "\n";
+            if (j.contains("info") && j["info"].is_array())
+                for (const auto& info : j["info"])
+                    if (info.is_string()) said.exception += indent(trim(info.get<std::string>()), "  ");
         } else if (event == "end") {
             said.ended = true;
             said.success = j.value("success", false);
@@ -162,7 +165,7 @@ Run student_end(const Outcome& o, const Options& options) {
 
 std::string failure_message(const Said& said) {
     std::string message = said.first_failure;
-    if (message.empty() && !said.exception.empty()) message = "threw an exception: " + said.exception + "\n";
+    if (message.empty() && !said.exception.empty()) message = "threw an exception: " + said.exception;
     if (said.failed_checks > 1)
         message += "(" + std::to_string(said.failed_checks) + " checks failed in this test; the first is shown)\n";
     if (message.empty()) message = "the test failed\n";

@@ -458,10 +458,12 @@ std::vector<std::string> lint(const Ladder& ladder, const std::string& file_name
     for (std::size_t k = 0; k < ladder.levels.size(); ++k)
         if (const auto left = tex_left(plain_text(ladder.levels[k])); !left.empty())
             problems.push_back(where + ", Hint " + std::to_string(k + 1) + ": TeX left in the terminal text: " + left);
-    if (!ladder.levels.empty())
-        if (const auto code = code_in_nudge(ladder.levels[0]); !code.empty())
-            problems.push_back(where + ", Hint 1 holds code of the answer (" + code +
-                               "); a nudge names the equation or property, the code comes at Hint 3");
+    // No rung holds code: a hint names the equation, the property or a check the student can
+    // make (a value for given inputs, a limiting case), never what to type.
+    for (std::size_t k = 0; k < ladder.levels.size(); ++k)
+        if (const auto code = code_in_nudge(ladder.levels[k]); !code.empty())
+            problems.push_back(where + ", Hint " + std::to_string(k + 1) + " holds code of the answer (" + code +
+                               "); a hint names the equation, the property or a check to make, never the code");
     return problems;
 }
 

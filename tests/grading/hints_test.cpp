@@ -10,7 +10,7 @@ const char* good =
     "# Hints\n\nIntro text.\n\n## Chapter 1\n\nA chapter note.\n\n"
     "### hat\n\n#### Hint 1\nThe matrix $\\hat{w}$ is defined by $\\hat{w}\\,x = w \\times x$; see "
     "`rigid/rotation.hpp`.\n\n"
-    "#### Hint 2\nPlace $w_1$, $w_2$, $w_3$.\n\n#### Hint 3\n`W << 0, -w.z(), w.y(), ...;`\n\n"
+    "#### Hint 2\nPlace $w_1$, $w_2$, $w_3$.\n\n#### Hint 3\nCheck: $\\hat{w}\\,w = 0$ for every $w$.\n\n"
     "### vee\n\n#### Hint 1\nUse `hat` backwards: $\\Omega_k = -\\tfrac{1}{2}\\epsilon_{kij}W_{ij}$.\n\n"
     "#### Hint 2\nAverage the pair.\n";
 }  // namespace
@@ -91,7 +91,7 @@ TEST_CASE("the terminal printer turns the TeX subset into plain text") {
     CHECK(hints::tex_left("code `{1, 2}` is code").empty());
 }
 
-TEST_CASE("the nudge rule finds code of the answer in a planted level-1 hint") {
+TEST_CASE("the code rule finds code of the answer in a planted hint, at every rung") {
     const char* bad[] = {
         "Write the matrix with `W << 0, -w.z(), w.y(), ...;`.",
         "[P, (1.1.1)] is `vee` applied to `R.transpose() * R_dot`. That is all.",
@@ -127,6 +127,15 @@ TEST_CASE("the nudge rule finds code of the answer in a planted level-1 hint") {
     const auto problems = hints::lint(h.ladders[0], "hints.md");
     REQUIRE(problems.size() == 1);
     CHECK(problems[0].find("hints.md:1: body_angular_velocity, Hint 1 holds code of the answer") == 0);
+    // Every rung: the last one too.
+    const hints::Hints last = hints::parse(
+        "### hat\n#### Hint 1\nThe cross product as a matrix.\n#### Hint 2\nIts diagonal is zero.\n"
+        "#### Hint 3\n`m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;`\n",
+        "hints.md");
+    REQUIRE(last.error.empty());
+    const auto top = hints::lint(last.ladders[0], "hints.md");
+    REQUIRE(top.size() == 1);
+    CHECK(top[0].find("hints.md:1: hat, Hint 3 holds code of the answer") == 0);
 }
 
 TEST_CASE("the terminal text of a level says how to get the next") {
