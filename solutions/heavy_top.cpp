@@ -98,7 +98,8 @@ HeavyTop heavy_top(const Mat3& J, double f, const Vec3& k, const Vec3& z0) {
     if (!(eig.eigenvalues().minCoeff() > 0))
         throw std::invalid_argument("inertia tensor J must be positive definite (all principal moments > 0)");
     require_positive(f, "f = g L mu");
-    return {J, f, require_axis(k, "vertical k"), require_axis(z0, "centre-of-mass direction z(0)")};
+    return {J, f, require_axis(k, "heavy_top: its argument k (the upward vertical)"),
+            require_axis(z0, "heavy_top: its argument z0 (the direction z(0) from O to the centre of mass)")};
 }
 
 BodyState euler_poisson_rhs(const HeavyTop& top, const BodyState& s) {

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -48,6 +49,20 @@ inline void log_margin(const char* file, int line, double err, double tol) {
         return path && *path ? std::fopen(path, "a") : nullptr;
     }();
     if (out) std::fprintf(out, "%s\t%d\t%.17g\t%.17g\n", file, line, err, tol), std::fflush(out);
+}
+
+// x with 17 significant digits (every double exactly), for a failure message that must show
+// the digits a relative check measured.
+inline std::string digits17(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+}
+
+// The relative error |x - expected| / |expected|, worked out in long double; NaN stays NaN.
+inline double relative_error(double x, long double expected) {
+    return static_cast<double>(std::abs((static_cast<long double>(x) - expected) / expected));
 }
 
 // Values every grader feeds to a function that must reject them.
@@ -121,6 +136,22 @@ std::string message_of(F&& f) {
              << check_tol_);                                                                              \
         CHECK(checks::max_abs_diff(check_a_, check_b_) <= check_tol_);                                    \
         checks::log_margin(__FILE__, __LINE__, checks::max_abs_diff(check_a_, check_b_), check_tol_);     \
+    } while (0)
+
+// |actual - expected| <= tol |expected|, a relative error (expected may be a long double
+// reference), with the quantity, both values to 17 digits, the relative error and the tolerance
+// in the failure message: CHECK_REL(rigid::grioli_root(m), S, 4e-15).
+#define CHECK_REL(actual, expected, tol)                                                                    \
+    do {                                                                                                    \
+        const double check_actual_ = (actual);                                                              \
+        const long double check_expected_ = (expected);                                                     \
+        const double check_tol_ = (tol);                                                                    \
+        const double check_rel_ = checks::relative_error(check_actual_, check_expected_);                   \
+        INFO(#actual ": expected " << checks::digits17(static_cast<double>(check_expected_)) << ", actual " \
+                                   << checks::digits17(check_actual_) << ", relative error " << check_rel_  \
+                                   << ", tolerance " << check_tol_);                                        \
+        CHECK(check_rel_ <= check_tol_);                                                                    \
+        checks::log_margin(__FILE__, __LINE__, check_rel_, check_tol_);                                     \
     } while (0)
 
 // error <= tol for an error measure (a norm, a relative error, a residual), with the error and

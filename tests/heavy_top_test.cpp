@@ -130,6 +130,38 @@ TEST_SUITE("ch04_heavy_top") {
         CHECK_THROWS_AS(rigid::heavy_top(J, 1, Vec3::UnitZ(), Vec3(nan_, 0, 1)), std::invalid_argument);
     }
 
+    TEST_CASE("heavy_top: rejects a J whose diagonal is positive but which is not positive definite") {
+        // Positive moments on the diagonal (and a positive determinant) do not make a symmetric J
+        // positive definite, what every inertia tensor is: these have eigenvalues (3, 1, -1) and
+        // (5, -1, -1).
+        Mat3 J1, J2;
+        J1 << 1, 2, 0, 2, 1, 0, 0, 0, 1;
+        J2 << 1, 2, 2, 2, 1, 2, 2, 2, 1;
+        for (const Mat3& J : {J1, J2}) {
+            INFO("J =\n"
+                 << J << "\nwith the eigenvalues " << Eigen::SelfAdjointEigenSolver<Mat3>(J).eigenvalues().transpose());
+            CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, Vec3::UnitZ(), Vec3::UnitX()), std::invalid_argument);
+        }
+    }
+
+    TEST_CASE("heavy_top: judges symmetry relative to the largest entry of J (the same body in other units)") {
+        // |J_ij - J_ji| <= 1e-12 max |J_kl|: in units that make J 1e6 or 1e-6 times larger, half that
+        // allowance is accepted and twice it refused, as for J itself.
+        Mat3 J = Vec3(2, 3, 4).asDiagonal();
+        J(0, 1) = J(1, 0) = 0.5;
+        for (double scale : {1e-6, 1.0, 1e6}) {
+            const double allowance = 1e-12 * 4 * scale;
+            Mat3 ok = scale * J, bad = scale * J;
+            ok(1, 0) += 0.5 * allowance;
+            bad(1, 0) += 2 * allowance;
+            INFO("J scaled by " << scale << ": |J_10 - J_01| = " << ok(1, 0) - ok(0, 1) << " must be accepted, "
+                                << bad(1, 0) - bad(0, 1) << " refused (1e-12 of the largest entry is " << allowance
+                                << ")");
+            CHECK_NOTHROW((void)rigid::heavy_top(ok, 1.0, Vec3::UnitZ(), Vec3::UnitX()));
+            CHECK_THROWS_AS((void)rigid::heavy_top(bad, 1.0, Vec3::UnitZ(), Vec3::UnitX()), std::invalid_argument);
+        }
+    }
+
     TEST_CASE("euler_poisson_rhs: equals the lab-frame torque of gravity brought into the body") {
         for (int n = 0; n < 20; ++n) {
             const Mat3 J = random_inertia();
@@ -213,6 +245,20 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 a = checks::random_unit(), b = checks::random_unit();
             const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(-3, 3), t = checks::uniform(-5, 5);
             CHECK_MAT_NEAR(rigid::euler_vector(J, {a, alpha, b, beta}, t), E_ref(J, a, alpha, b, beta, t), 1e-12);
+        }
+    }
+
+    TEST_CASE("euler_vector: normalises a and b (axes of any length name the same precession)") {
+        for (int n = 0; n < 10; ++n) {
+            const Mat3 J = random_inertia();
+            const Vec3 a = checks::random_unit(), b = checks::random_unit();
+            const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(-3, 3), t = checks::uniform(-5, 5);
+            const double la = std::exp(checks::uniform(-3, 3)), lb = std::exp(checks::uniform(-3, 3));
+            INFO("euler_vector(J, {" << la << " a, alpha, " << lb << " b, beta}, t) with unit a = " << a.transpose()
+                                     << ", b = " << b.transpose() << ", alpha = " << alpha << ", beta = " << beta
+                                     << ", t = " << t);
+            CHECK_MAT_NEAR(rigid::euler_vector(J, {la * a, alpha, lb * b, beta}, t), E_ref(J, a, alpha, b, beta, t),
+                           1e-12);
         }
     }
 
@@ -343,6 +389,10 @@ TEST_SUITE("ch04_heavy_top") {
         const double expected = std::sqrt(sum / n) / f;
         CHECK(expected > 0.01);
         CHECK_NEAR(rigid::precession_residual(top_of(J, f, k, z0), {a, alpha, b, beta}, n), expected, 1e-12 * expected);
+        // The axes are normalised: a of length 2.5 and b of length 0.4 name the same precession.
+        INFO("precession_residual with the axes 2.5 a and 0.4 b");
+        CHECK_NEAR(rigid::precession_residual(top_of(J, f, k, z0), {2.5 * a, alpha, 0.4 * b, beta}, n), expected,
+                   1e-12 * expected);
     }
 
     TEST_CASE("precession_residual: vanishes on the Lagrange top's precession about the vertical") {
@@ -365,6 +415,7 @@ TEST_SUITE("ch04_heavy_top") {
     }
 
     TEST_CASE("min_precession_residual: finds the orthogonal precession with beta = alpha of an asymmetric body") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const rigid::PrecessionFit fit =
             rigid::min_precession_residual({.moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 2, .ratio = 1});
         CHECK_SMALL(fit.residual, 1e-10);
@@ -387,6 +438,7 @@ TEST_SUITE("ch04_heavy_top") {
     }
 
     TEST_CASE("min_precession_residual: finds Lagrange's precession about the vertical of a symmetric body") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const rigid::PrecessionFit fit = rigid::min_precession_residual(
             {.moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true});
         CHECK_SMALL(fit.residual, 1e-10);
@@ -394,6 +446,7 @@ TEST_SUITE("ch04_heavy_top") {
     }
 
     TEST_CASE("min_precession_residual: finds Lagrange's precession of a random symmetric body (the graders' seed)") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const double A = checks::uniform(1, 2), C = A * checks::uniform(1.2, 1.9);
         const rigid::PrecessionFit fit = rigid::min_precession_residual(
             {.moments = Vec3(A, A, C), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true});
@@ -409,6 +462,7 @@ TEST_SUITE("ch04_heavy_top") {
     // direction that a search confined to part of the sphere misses: such a search stays near a
     // residual of 0.27 here (measured).
     TEST_CASE("min_precession_residual: with k free finds a regular precession of a symmetric body at gamma = pi/3") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const rigid::PrecessionFit fit =
             rigid::min_precession_residual({.moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5});
         CHECK_SMALL(fit.residual, 1e-10);
@@ -424,6 +478,7 @@ TEST_SUITE("ch04_heavy_top") {
     }
 
     TEST_CASE("min_precession_residual: stays away from zero for an asymmetric body precessing about the vertical") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const rigid::PrecessionFit fit = rigid::min_precession_residual(
             {.moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.0, .k_along_b = true});
         CHECK(fit.residual >= 1e-2);
@@ -447,6 +502,7 @@ TEST_SUITE("ch04_heavy_top") {
     }
 
     TEST_CASE("min_precession_residual: rejects bad moments and angles") {
+        ALSO_USES("precession_residual");  // the search minimises it
         CHECK_THROWS_AS(rigid::min_precession_residual({.moments = Vec3(1, 2, 4), .gamma = 1, .ratio = 1}),
                         std::invalid_argument);
         CHECK_THROWS_AS(rigid::min_precession_residual({.moments = Vec3(-1, 2, 2), .gamma = 1, .ratio = 1}),
@@ -724,6 +780,7 @@ TEST_SUITE("ch04_heavy_top") {
     TEST_CASE(
         "min_precession_residual: rejects moments or gamma or ratio or restarts just across each rule and accepts the "
         "edges") {
+        ALSO_USES("precession_residual");  // the search minimises it
         const rigid::PrecessionSearch ok{.moments = Vec3(1, 2, 3), .gamma = 1.0, .ratio = 1.0, .restarts = 1};
         auto with = [&ok](auto change) {
             rigid::PrecessionSearch s = ok;
