@@ -557,6 +557,7 @@ private:
     std::string figure_html(const Page& page, const std::smatch& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
     std::string hand_value_html(const prose::ValueMarker& v, const prose::Json* report);
+    std::string numbers_html(std::string line, const std::string& where);
     std::string motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion);
     std::string motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
                              const std::string& path, int motion, const std::string& where);
@@ -835,28 +836,31 @@ std::string Book::preprocess(const Page& page) {
             md += figure_html(page, m, ++figure);
             continue;
         }
-        // The number tags (<!--exact--> ...) are for the check of numbers, not for the reader; at
-        // the start of a line pandoc would take one for an HTML block and leave the line's math as text.
-        const auto tags = prose::find_number_tags(line);
-        for (auto t = tags.rbegin(); t != tags.rend(); ++t) line.erase(t->begin, t->end - t->begin);
-        auto markers = prose::find_value_markers(line);
-        for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
-            std::string shown;
-            if (!v->error.empty()) {
-                problems_.push_back(where + ": value '" + v->path + "': " + v->error);
-                continue;
-            }
-            try {
-                shown = value_html(*v);
-            } catch (const std::exception& e) {
-                problems_.push_back(where + ": value '" + v->path + "': " + e.what());
-                continue;
-            }
-            line.replace(v->begin, v->end - v->begin, shown);
-        }
-        md += line + "\n";
+        md += numbers_html(line, where) + "\n";
     }
     return md;
+}
+
+// One line of prose with its numbers as the reader sees them: each value marker replaced by its
+// value (problems noted), and the number tags (<!--exact--> ...) dropped: they are for the check of
+// numbers, and at the start of a line pandoc would take one for an HTML block and leave the line's
+// math as text.
+std::string Book::numbers_html(std::string line, const std::string& where) {
+    const auto tags = prose::find_number_tags(line);
+    for (auto t = tags.rbegin(); t != tags.rend(); ++t) line.erase(t->begin, t->end - t->begin);
+    auto markers = prose::find_value_markers(line);
+    for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
+        if (!v->error.empty()) {
+            problems_.push_back(where + ": value '" + v->path + "': " + v->error);
+            continue;
+        }
+        try {
+            line.replace(v->begin, v->end - v->begin, value_html(*v));
+        } catch (const std::exception& e) {
+            problems_.push_back(where + ": value '" + v->path + "': " + e.what());
+        }
+    }
+    return line;
 }
 
 // The contents page opens the book: its title, the first paragraph of the top README (what
