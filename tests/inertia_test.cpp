@@ -262,39 +262,48 @@ TEST_SUITE("ch06_grioli_lines") {
         }
     }
 
+    // The shared body and four random ones (the graders' seed), each shifted where the two roots in the
+    // (x_A, x_C) plane nearly meet: z at phi_g = +-(pi/2 - d), d = 1e-3 and 1e-6, at the distance L
+    // where h = mu L^2 = (C_g - A_g)(z_C^2 - z_A^2); sqrt(D) is then about 2 d (C_g - A_g).
+    // Calls f(body, phi_g, z, L) for each.
+    template <class F>
+    void for_each_near_meeting_root(F && f) {
+        std::vector<BodyAtG> bodies{body0};
+        for (int n = 0; n < 4; ++n) bodies.push_back(random_body());
+        for (const BodyAtG& b : bodies)
+            for (double d : {1e-3, 1e-6})
+                for (double phi_g : {pi / 2 - d, -(pi / 2 - d)}) {
+                    const Vec3 z = rigid::shift_direction(phi_g);
+                    const double L = std::sqrt((b.C_g - b.A_g) * (z.z() - z.x()) * (z.z() + z.x()) / b.mu);
+                    f(b, phi_g, z, L);
+                }
+    }
+
     TEST_CASE("shifted_moments: keep sqrt(D) = C - A to its digits where the two roots nearly meet (A near C)") {
         // Along phi_g = +-(pi/2 - d), z nearly along x_C, at h = (C_g - A_g)(z_C^2 - z_A^2) the roots in
         // the (x_A, x_C) plane nearly meet: sqrt(D) = (C_g - A_g) sin 2phi_g, about 2 d (C_g - A_g). D
         // as (5.4) prints it, h^2 + 2 (C_g - A_g)(z_A^2 - z_C^2) h + (C_g - A_g)^2, is then three terms
         // of the size of (C_g - A_g)^2 that cancel to (2 d)^2 of it: eps / (2 d)^2 of error in D, half
         // that in sqrt(D) (3e-5 at d = 1e-6); the sum of squares of the contract keeps every digit.
-        std::vector<BodyAtG> bodies{body0};
-        for (int n = 0; n < 4; ++n) bodies.push_back(random_body());
-        for (const BodyAtG& b : bodies) {
-            const double dCA = b.C_g - b.A_g;
-            for (double d : {1e-3, 1e-6})
-                for (double phi_g : {pi / 2 - d, -(pi / 2 - d)}) {
-                    const Vec3 z = rigid::shift_direction(phi_g);
-                    const double L = std::sqrt(dCA * (z.z() - z.x()) * (z.z() + z.x()) / b.mu);
-                    const auto r = reference(b, L, z);
-                    const rigid::ShiftedMoments m = rigid::shifted_moments(b, L, z);
-                    INFO("the body (" << b.A_g << ", " << b.B_g << ", " << b.C_g << "), mu = " << b.mu
-                                      << ", z at phi_g = " << phi_g << ", L = " << checks::digits17(L)
-                                      << ": C - A = sqrt(D) = " << static_cast<double>(r.CmA));
-                    CHECK_REL(m.C_minus_A, r.CmA, 1e-14);
-                    CHECK_REL(m.A, r.A, 1e-14);
-                    CHECK_REL(m.C, r.C, 1e-14);
-                    // The two differences carry the rounding of h = mu L^2 (B - A = (h + B_g - A_g - (C_g -
-                    // B_g) + sqrt(D)) / 2 is small beside h when B_g - A_g is): the condition numbers of the
-                    // test "keep their digits from 1e-6 to 1e6 body sizes".
-                    const double h = b.mu * L * L, dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g;
-                    const double terms = dBA * dCB + h * (dCB * z.x() * z.x() + dBA * z.z() * z.z());
-                    const double cond_CB = terms / static_cast<double>(r.BmA * quadref::abs_q(r.CmB));
-                    const double cond_BA = terms / static_cast<double>(r.CmB * r.CmB + r.BmA * r.BmA);
-                    CHECK_REL(m.B_minus_A, r.BmA, 1.6e-14 * (1 + cond_BA));
-                    CHECK_REL(m.C_minus_B, r.CmB, 1.6e-14 * (1 + cond_CB));
-                }
-        }
+        for_each_near_meeting_root([](const BodyAtG& b, double phi_g, const Vec3& z, double L) {
+            const auto r = reference(b, L, z);
+            const rigid::ShiftedMoments m = rigid::shifted_moments(b, L, z);
+            INFO("the body (" << b.A_g << ", " << b.B_g << ", " << b.C_g << "), mu = " << b.mu
+                              << ", z at phi_g = " << phi_g << ", L = " << checks::digits17(L)
+                              << ": C - A = sqrt(D) = " << static_cast<double>(r.CmA));
+            CHECK_REL(m.C_minus_A, r.CmA, 1e-14);
+            CHECK_REL(m.A, r.A, 1e-14);
+            CHECK_REL(m.C, r.C, 1e-14);
+            // The two differences carry the rounding of h = mu L^2 (B - A = (h + B_g - A_g - (C_g -
+            // B_g) + sqrt(D)) / 2 is small beside h when B_g - A_g is): the condition numbers of the
+            // test "keep their digits from 1e-6 to 1e6 body sizes".
+            const double h = b.mu * L * L, dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g;
+            const double terms = dBA * dCB + h * (dCB * z.x() * z.x() + dBA * z.z() * z.z());
+            const double cond_CB = terms / static_cast<double>(r.BmA * quadref::abs_q(r.CmB));
+            const double cond_BA = terms / static_cast<double>(r.CmB * r.CmB + r.BmA * r.BmA);
+            CHECK_REL(m.B_minus_A, r.BmA, 1.6e-14 * (1 + cond_BA));
+            CHECK_REL(m.C_minus_B, r.CmB, 1.6e-14 * (1 + cond_CB));
+        });
     }
 
     TEST_CASE("shifted_moments: A(h) and C(h) never decrease and the smallest moment stays the smallest") {
@@ -523,25 +532,17 @@ TEST_SUITE("ch06_grioli_lines") {
         // direction itself is ill-conditioned there: cos^2 phi - 1/2 = (h + (C_g - A_g) cos 2phi_g) /
         // (2 sqrt(D)) moves by a few eps (h + C_g - A_g) / sqrt(D) when h = mu L^2 is rounded (1.2e-13
         // at d = 1e-3, measured), and the tolerance allows that.
-        std::vector<BodyAtG> bodies{body0};
-        for (int n = 0; n < 4; ++n) bodies.push_back(random_body());
-        for (const BodyAtG& b : bodies) {
+        for_each_near_meeting_root([](const BodyAtG& b, double phi_g, const Vec3& z, double L) {
             const double dCA = b.C_g - b.A_g;
-            for (double d : {1e-3, 1e-6})
-                for (double phi_g : {pi / 2 - d, -(pi / 2 - d)}) {
-                    const Vec3 z = rigid::shift_direction(phi_g);
-                    const double L = std::sqrt(dCA * (z.z() - z.x()) * (z.z() + z.x()) / b.mu);
-                    const auto r = reference(b, L, z);
-                    const rigid::Cos2Sin2 t = rigid::smallest_axis_tilt(b, L, z);
-                    const double cond = (b.mu * L * L + dCA) / static_cast<double>(r.CmA);
-                    INFO("the body (" << b.A_g << ", " << b.B_g << ", " << b.C_g << "), mu = " << b.mu
-                                      << ", z at phi_g = " << phi_g << ", L = " << checks::digits17(L)
-                                      << ": C - A = sqrt(D) = " << static_cast<double>(r.CmA)
-                                      << ", (h + C_g - A_g) / sqrt(D) = " << cond);
-                    CHECK_REL(t.cos2, r.cos2, 32 * eps * cond);
-                    CHECK_REL(t.sin2, r.sin2, 32 * eps * cond);
-                }
-        }
+            const auto r = reference(b, L, z);
+            const rigid::Cos2Sin2 t = rigid::smallest_axis_tilt(b, L, z);
+            const double cond = (b.mu * L * L + dCA) / static_cast<double>(r.CmA);
+            INFO("the body (" << b.A_g << ", " << b.B_g << ", " << b.C_g << "), mu = " << b.mu
+                              << ", z at phi_g = " << phi_g << ", L = " << checks::digits17(L) << ": C - A = sqrt(D) = "
+                              << static_cast<double>(r.CmA) << ", (h + C_g - A_g) / sqrt(D) = " << cond);
+            CHECK_REL(t.cos2, r.cos2, 32 * eps * cond);
+            CHECK_REL(t.sin2, r.sin2, 32 * eps * cond);
+        });
     }
 
     TEST_CASE("grioli_ratio: is (B - A)/(C - A) and (C - B)/(C - A) from the differences alone") {
