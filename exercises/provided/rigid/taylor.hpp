@@ -9,6 +9,11 @@
 //     definite matrix (it is inverted once, in Real).
 //   * Fixed steps, as integrate_rk4 takes them: n = ceil((t_k+1 - t_k) / h) equal steps between
 //     output times, each step the Taylor polynomial of degree `order` evaluated by Horner's rule.
+//   * Summation::plain adds the whole polynomial to the state at once: one rounding of the state
+//     per step. Summation::compensated evaluates the increment (the terms of degree 1 and up)
+//     on its own and adds it with Kahan's compensation, carried from step to step: the state is
+//     then rounded once per output, not once per step, and over a long run the error grows as
+//     round-off that does not correlate does (Brouwer's law; Chapter 7).
 #pragma once
 
 #include <functional>
@@ -16,6 +21,7 @@
 
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
+#include "rigid/stepping.hpp"
 #include "rigid/types.hpp"
 
 namespace rigid {
@@ -43,14 +49,15 @@ BodyState to_double(const TaylorState<Real>& s) {
 // integrate_rk4) or a non-finite state.
 template <class Real>
 long integrate_taylor(const HeavyTop& top, const BodyState& s0, const std::vector<double>& times,
-                      const std::function<void(double t, const TaylorState<Real>& s)>& observe, double h, int order);
+                      const std::function<void(double t, const TaylorState<Real>& s)>& observe, double h, int order,
+                      Summation summation = Summation::plain);
 // end snippet
 
 extern template long integrate_taylor<double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
                                               const std::function<void(double, const TaylorState<double>&)>&, double,
-                                              int);
+                                              int, Summation);
 extern template long integrate_taylor<long double>(const HeavyTop&, const BodyState&, const std::vector<double>&,
                                                    const std::function<void(double, const TaylorState<long double>&)>&,
-                                                   double, int);
+                                                   double, int, Summation);
 
 }  // namespace rigid
