@@ -98,57 +98,53 @@ Problem problem(long N) {
     return pb;
 }
 
-// Your RK4, GSL rk8pd, and RKMK4, Strang and its triple jump with plain and compensated sums.
-std::vector<Track> run_tracks(const Problem& pb, double tol) {
+// The rows of one track from the states at the output instants: the drifts of the energy and
+// of the vertical momentum, the orthogonality defect, and the angle from the exact R.
+void record(std::vector<Track>& tracks, Track tr, const Problem& pb, const std::vector<BodyState>& out) {
     const auto& top = pb.top;
-    const auto& g = pb.g;
-    const auto& s0 = pb.s0;
-    const auto& times = pb.times;
-    const auto& at = pb.at;
-    const double h = pb.h, period = pb.period, H0 = pb.H0, E_scale = pb.E_scale, L0 = pb.L0, L_scale = pb.L_scale;
-    std::vector<Track> tracks;
-    std::vector<BodyState> out(times.size());
-    const auto record = [&](Track& tr) {
-        for (std::size_t i = 1; i < times.size(); ++i) {
-            const BodyState& s = out[i];
-            tr.rows.push_back(
-                {times[i] / period, double(at[i]), std::abs(rigid::heavy_top_energy(top, s) - H0) / E_scale,
-                 std::abs(top.k.dot(s.R * top.J * s.Omega) - L0) / L_scale, rigid::orthogonality_defect(s.R),
-                 rigid::geodesic_angle(rigid::grioli_rotation(g, times[i]), s.R)});
-        }
-        tracks.push_back(tr);
-    };
+    for (std::size_t i = 1; i < pb.times.size(); ++i) {
+        const BodyState& s = out[i];
+        tr.rows.push_back(
+            {pb.times[i] / pb.period, double(pb.at[i]), std::abs(rigid::heavy_top_energy(top, s) - pb.H0) / pb.E_scale,
+             std::abs(top.k.dot(s.R * top.J * s.Omega) - pb.L0) / pb.L_scale, rigid::orthogonality_defect(s.R),
+             rigid::geodesic_angle(rigid::grioli_rotation(pb.g, pb.times[i]), s.R)});
+    }
+    tracks.push_back(tr);
+}
+
+// Your RK4 and GSL rk8pd, on the packed state.
+void run_library_tracks(std::vector<Track>& tracks, const Problem& pb, double tol) {
+    const auto& top = pb.top;
+    std::vector<BodyState> out(pb.times.size());
     const rigid::OdeRhs rhs = [&top](double, const VecX& y) {
         return rigid::pack(rigid::euler_poisson_rhs(top, rigid::unpack(y)));
     };
+    std::size_t i = 0;
+    const auto keep = [&](double, const VecX& y) { out[i++] = rigid::unpack(y); };
+    Track rk4{"rk4", "your RK4", "lc rgb '#000000'"};
+    rk4.time_s = kit::min_time(
+        [&] {
+            i = 0;
+            rigid::integrate_rk4(rhs, rigid::pack(pb.s0), pb.times, keep, pb.h);
+        },
+        1);
+    record(tracks, rk4, pb, out);
+    std::ostringstream label;
+    label << "GSL rk8pd, tol " << tol;
+    Track rk8pd{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
+    rk8pd.time_s = kit::min_time(
+        [&] {
+            i = 0;
+            rigid::integrate_gsl(rhs, rigid::pack(pb.s0), pb.times, keep,
+                                 {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
+        },
+        1);
+    record(tracks, rk8pd, pb, out);
+}
 
-    {
-        Track tr{"rk4", "your RK4", "lc rgb '#000000'"};
-        std::size_t i = 0;
-        tr.time_s = kit::min_time(
-            [&] {
-                i = 0;
-                rigid::integrate_rk4(
-                    rhs, rigid::pack(s0), times, [&](double, const VecX& y) { out[i++] = rigid::unpack(y); }, h);
-            },
-            1);
-        record(tr);
-    }
-    {
-        std::ostringstream label;
-        label << "GSL rk8pd, tol " << tol;
-        Track tr{"rk8pd", label.str(), "lc rgb '#0072B2' dt 2"};
-        std::size_t i = 0;
-        tr.time_s = kit::min_time(
-            [&] {
-                i = 0;
-                rigid::integrate_gsl(rhs, rigid::pack(s0), times,
-                                     [&](double, const VecX& y) { out[i++] = rigid::unpack(y); },
-                                     {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
-            },
-            1);
-        record(tr);
-    }
+// RKMK4, Strang and its triple jump, each with plain and compensated sums.
+void run_geometric_tracks(std::vector<Track>& tracks, const Problem& pb) {
+    const auto& top = pb.top;
     const rigid::IncrementStepper rkmk4 = [&top](const BodyState& s, double dt) {
         return rigid::rkmk4_step(top, s, dt);
     };
@@ -162,6 +158,7 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
         std::string name, label, colour;
         const rigid::IncrementStepper* step;
     };
+    std::vector<BodyState> out(pb.times.size());
     for (const Geometric& gm :
          {Geometric{"rkmk4", "RKMK4", "#009E73", &rkmk4}, Geometric{"strang", "Strang", "#D55E00", &strang},
           Geometric{"yoshida4", "Strang + triple jump", "#CC79A7", &yoshida}}) {
@@ -175,12 +172,19 @@ std::vector<Track> run_tracks(const Problem& pb, double tol) {
                 [&] {
                     i = 0;
                     rigid::integrate_steps(
-                        *gm.step, s0, times, [&](double, const BodyState& s) { out[i++] = s; }, h, sum);
+                        *gm.step, pb.s0, pb.times, [&](double, const BodyState& s) { out[i++] = s; }, pb.h, sum);
                 },
                 1);
-            record(tr);
+            record(tracks, tr, pb, out);
         }
     }
+}
+
+// Your RK4, GSL rk8pd, and RKMK4, Strang and its triple jump with plain and compensated sums.
+std::vector<Track> run_tracks(const Problem& pb, double tol) {
+    std::vector<Track> tracks;
+    run_library_tracks(tracks, pb, tol);
+    run_geometric_tracks(tracks, pb);
     return tracks;
 }
 

@@ -191,28 +191,65 @@ void write_runs(kit::Scene& scene, const Sweeps& w) {
 
 // The summary (work_precision.md and the report): per scenario and method, the best error,
 // and the time to reach the target.
-void write_summary(kit::Scene& scene, const Sweeps& w) {
-    const bench::Budget& b = w.b;
-    const double target = w.target;
-    const auto& all = w.all;
-    const auto& methods = bench::methods();
-    auto refs = w.refs;
-    auto points = w.points;
-    // The summary: per scenario and method, the best error, and the time to reach the target.
+// What the summary keeps while it writes: its markdown, the rows of by_method, and the best
+// method on Grioli over 100 periods (the headline).
+struct Summary {
     std::ostringstream md;
-    md << "# Work-precision summary (sweep: " << b.name << ")\n\n"
-       << "Error: the larger of the angle between R and the reference (rad) and |Omega - Omega_ref| / max|Omega|, "
-          "largest over the output times. Run time: integration only, minimum over "
-       << b.repeats << " repetitions. Time to " << sci(target, 0)
-       << ": interpolated on the lower envelope of the sweep. Reference: Taylor degree 24 in long double.\n";
-    std::vector<std::vector<double>> summary;
+    std::vector<std::vector<double>> rows;
     const bench::Point* grioli_best = nullptr;
     std::string grioli_best_method;
-    for (std::size_t si = 0; si < all.size(); ++si) {
-        const bench::Scenario& sc = all[si];
-        const bench::Reference& ref = refs[sc.name];
-        const double t_rk8pd = bench::time_to_reach(points[sc.name]["rk8pd"], target);
-        md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", " << sci(ref.time_s, 2)
+};
+
+// The fastest method to the target on one scenario, with and without the Taylor method.
+struct Fastest {
+    double time = std::numeric_limits<double>::infinity(), listed_time = time;
+    std::string name = "none", listed_name = "none";
+};
+
+// The sweep of one method on one scenario (empty when it was not run).
+const std::vector<bench::Point>& sweep_of(const Sweeps& w, const std::string& scenario, const std::string& method) {
+    static const std::vector<bench::Point> none;
+    const auto s = w.points.find(scenario);
+    if (s == w.points.end()) return none;
+    const auto m = s->second.find(method);
+    return m == s->second.end() ? none : m->second;
+}
+
+// One scenario's table: a row per method (markdown and by_method), and its fastest methods.
+Fastest summarize_methods(Summary& out, const Sweeps& w, std::size_t si, double t_rk8pd) {
+    const bench::Scenario& sc = w.all[si];
+    const auto& methods = bench::methods();
+    Fastest f;
+    for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+        const auto& pts = sweep_of(w, sc.name, methods[mi].name);
+        const bench::Point* bp = bench::best(pts);
+        const double t = bench::time_to_reach(pts, w.target);
+        if (std::isfinite(t) && t < f.time) f.time = t, f.name = methods[mi].name;
+        if (std::isfinite(t) && t < f.listed_time && methods[mi].name != "taylor16")
+            f.listed_time = t, f.listed_name = methods[mi].name;
+        if (!bp) {
+            out.md << "| " << methods[mi].label << " | failed | | | | | | |\n";
+            out.rows.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
+            continue;
+        }
+        out.md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
+               << " | " << (std::isfinite(t) && std::isfinite(t_rk8pd) ? sci(t_rk8pd / t) : "—") << " | "
+               << sci(bp->m.orth) << " | " << sci(bp->m.dH) << " | " << sci(bp->m.dL) << " |\n";
+        out.rows.push_back({100.0 * si + mi, double(si), double(mi), bp->m.error, bp->time_s, t,
+                            std::isfinite(t) ? t_rk8pd / t : nan_, bp->m.orth, bp->m.dH, bp->m.dL});
+        if (sc.name == "grioli_100" && (!out.grioli_best || bp->m.error < out.grioli_best->m.error))
+            out.grioli_best = bp, out.grioli_best_method = methods[mi].label;
+    }
+    return f;
+}
+
+// One scenario: its reference, its table, its fastest methods (markdown and report).
+void summarize_scenario(kit::Scene& scene, Summary& out, const Sweeps& w, std::size_t si) {
+    const bench::Scenario& sc = w.all[si];
+    const bench::Reference& ref = w.refs.at(sc.name);
+    const double target = w.target;
+    const double t_rk8pd = bench::time_to_reach(sweep_of(w, sc.name, "rk8pd"), target);
+    out.md << "\n## " << sc.title << "\n\nReference: h = " << sci(ref.h, 3) << ", " << sci(ref.time_s, 2)
            << " s; against itself at h/2: " << (ref.self_difference < 0 ? "not run" : sci(ref.self_difference))
            << "; against the closed form (" << (sc.exact ? sc.exact_name : "none")
            << "): " << (ref.exact_difference < 0 ? "—" : sci(ref.exact_difference))
@@ -222,83 +259,77 @@ void write_summary(kit::Scene& scene, const Sweeps& w) {
            << "| method | best error | its run time (s) | time to " << sci(target, 0)
            << " (s) | rk8pd time / this | orthogonality | energy drift | momentum drift |\n"
            << "|---|---|---|---|---|---|---|---|\n";
-        double fastest = std::numeric_limits<double>::infinity(), fastest_listed = fastest;
-        std::string fastest_name = "none", fastest_listed_name = "none";
-        for (std::size_t mi = 0; mi < methods.size(); ++mi) {
-            const auto& pts = points[sc.name][methods[mi].name];
-            const bench::Point* bp = bench::best(pts);
-            const double t = bench::time_to_reach(pts, target);
-            if (std::isfinite(t) && t < fastest) fastest = t, fastest_name = methods[mi].name;
-            if (std::isfinite(t) && t < fastest_listed && methods[mi].name != "taylor16")
-                fastest_listed = t, fastest_listed_name = methods[mi].name;
-            if (!bp) {
-                md << "| " << methods[mi].label << " | failed | | | | | | |\n";
-                summary.push_back({100.0 * si + mi, double(si), double(mi), nan_, nan_, nan_, nan_, nan_, nan_, nan_});
-                continue;
-            }
-            md << "| " << methods[mi].label << " | " << sci(bp->m.error) << " | " << sci(bp->time_s) << " | " << sci(t)
-               << " | " << (std::isfinite(t) && std::isfinite(t_rk8pd) ? sci(t_rk8pd / t) : "—") << " | "
-               << sci(bp->m.orth) << " | " << sci(bp->m.dH) << " | " << sci(bp->m.dL) << " |\n";
-            summary.push_back({100.0 * si + mi, double(si), double(mi), bp->m.error, bp->time_s, t,
-                               std::isfinite(t) ? t_rk8pd / t : nan_, bp->m.orth, bp->m.dH, bp->m.dL});
-            if (sc.name == "grioli_100" && (!grioli_best || bp->m.error < grioli_best->m.error))
-                grioli_best = bp, grioli_best_method = methods[mi].label;
-        }
-        const std::string k = sc.name + "_";
-        scene.report.add(k + "reference_self_difference", ref.self_difference,
-                         "long-double reference vs itself at h/2");
-        scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
-        scene.report.add(k + "reference_time_s", ref.time_s);
-        scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
-        scene.report.add(k + "kappa", ref.kappa, "growth of a change of the initial state");
-        scene.report.add(k + "expected_floor", ref.expected_floor, "eps kappa sqrt(steps)");
-        scene.report.add(k + "fastest_at_target", fastest_name);
-        scene.report.add(k + "fastest_time_s", fastest);
-        scene.report.add(k + "rk8pd_time_s", t_rk8pd);
-        scene.report.add(k + "speedup_vs_rk8pd", t_rk8pd / fastest, "rk8pd run time / fastest run time at the target");
-        scene.report.add(k + "fastest_without_taylor", fastest_listed_name, "the same, leaving out the Taylor method");
-        scene.report.add(k + "fastest_without_taylor_time_s", fastest_listed);
-        scene.report.add(k + "speedup_without_taylor", t_rk8pd / fastest_listed);
-        md << "\nFastest to " << sci(target, 0) << ": " << fastest_name << " (" << sci(fastest) << " s, "
-           << (std::isfinite(t_rk8pd / fastest) ? sci(t_rk8pd / fastest, 2) : "—") << " times faster than rk8pd); "
-           << "without the Taylor method: " << fastest_listed_name << " (" << sci(fastest_listed) << " s).\n";
-    }
-    scene.report.table("by_method",
-                       {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s",
-                        "speedup_vs_rk8pd", "orthogonality", "energy_drift", "momentum_drift"},
-                       summary, false);
-    md << "\nMethods: ";
-    for (std::size_t mi = 0; mi < methods.size(); ++mi) md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
-    md << ". Scenarios: ";
-    for (std::size_t si = 0; si < all.size(); ++si) md << (si ? ", " : "") << si << " = " << all[si].name;
-    md << ".\n";
-    write_file(scene, "work_precision.md", md.str());
+    const Fastest f = summarize_methods(out, w, si, t_rk8pd);
+    const std::string k = sc.name + "_";
+    scene.report.add(k + "reference_self_difference", ref.self_difference, "long-double reference vs itself at h/2");
+    scene.report.add(k + "reference_exact_difference", ref.exact_difference, "reference vs closed form (-1: none)");
+    scene.report.add(k + "reference_time_s", ref.time_s);
+    scene.report.add(k + "double_floor", ref.double_floor, "Taylor 24 in double vs the reference");
+    scene.report.add(k + "kappa", ref.kappa, "growth of a change of the initial state");
+    scene.report.add(k + "expected_floor", ref.expected_floor, "eps kappa sqrt(steps)");
+    scene.report.add(k + "fastest_at_target", f.name);
+    scene.report.add(k + "fastest_time_s", f.time);
+    scene.report.add(k + "rk8pd_time_s", t_rk8pd);
+    scene.report.add(k + "speedup_vs_rk8pd", t_rk8pd / f.time, "rk8pd run time / fastest run time at the target");
+    scene.report.add(k + "fastest_without_taylor", f.listed_name, "the same, leaving out the Taylor method");
+    scene.report.add(k + "fastest_without_taylor_time_s", f.listed_time);
+    scene.report.add(k + "speedup_without_taylor", t_rk8pd / f.listed_time);
+    out.md << "\nFastest to " << sci(target, 0) << ": " << f.name << " (" << sci(f.time) << " s, "
+           << (std::isfinite(t_rk8pd / f.time) ? sci(t_rk8pd / f.time, 2) : "—") << " times faster than rk8pd); "
+           << "without the Taylor method: " << f.listed_name << " (" << sci(f.listed_time) << " s).\n";
+}
 
-    if (grioli_best) {
-        const double floor = refs["grioli_100"].double_floor;
-        scene.report.headline("best method on Grioli over 100 periods (" + grioli_best_method +
+// The headline: the best method on Grioli over 100 periods, or the best of any when that
+// scenario was not run.
+void summary_headline(kit::Scene& scene, const Sweeps& w, const Summary& out) {
+    if (out.grioli_best) {
+        const double floor = w.refs.at("grioli_100").double_floor;
+        scene.report.headline("best method on Grioli over 100 periods (" + out.grioli_best_method +
                                   "): angle between R and the long-double reference, and Omega relative",
-                              grioli_best->m.error, grioli_best->time_s);
-        scene.report.add("grioli_100_best_method", grioli_best_method);
-        scene.report.add("grioli_100_best_error", grioli_best->m.error);
-        scene.report.add("grioli_100_best_over_floor", grioli_best->m.error / floor, "target: <= 10");
+                              out.grioli_best->m.error, out.grioli_best->time_s);
+        scene.report.add("grioli_100_best_method", out.grioli_best_method);
+        scene.report.add("grioli_100_best_error", out.grioli_best->m.error);
+        scene.report.add("grioli_100_best_over_floor", out.grioli_best->m.error / floor, "target: <= 10");
         // rk8pd's floor with GSL's driver and with the time kept as a two-part sum.
-        const bench::Point* plain = bench::best(points["grioli_100"]["rk8pd"]);
-        const bench::Point* compensated = bench::best(points["grioli_100"]["rk8pd_ct"]);
+        const bench::Point* plain = bench::best(sweep_of(w, "grioli_100", "rk8pd"));
+        const bench::Point* compensated = bench::best(sweep_of(w, "grioli_100", "rk8pd_ct"));
         if (plain && compensated) {
             scene.report.add("rk8pd_floor_gain", plain->m.error / compensated->m.error,
                              "Grioli, 100 periods: rk8pd's best error, GSL's driver over compensated time");
             scene.report.add("rk8pd_ct_over_floor", compensated->m.error / floor,
                              "compensated rk8pd's best / the floor");
         }
-    } else {
-        const bench::Point* any = nullptr;
-        for (const auto& [s, per] : points)
-            for (const auto& [m, pts] : per)
-                if (const bench::Point* p = bench::best(pts); p && (!any || p->m.error < any->m.error)) any = p;
-        if (!any) throw kit::NumericalFailure("no method produced a finite solution");
-        scene.report.headline("best error of any method on " + any->scenario, any->m.error, any->time_s);
+        return;
     }
+    const bench::Point* any = nullptr;
+    for (const auto& [s, per] : w.points)
+        for (const auto& [m, pts] : per)
+            if (const bench::Point* p = bench::best(pts); p && (!any || p->m.error < any->m.error)) any = p;
+    if (!any) throw kit::NumericalFailure("no method produced a finite solution");
+    scene.report.headline("best error of any method on " + any->scenario, any->m.error, any->time_s);
+}
+
+// The summary: per scenario and method, the best error, and the time to reach the target.
+void write_summary(kit::Scene& scene, const Sweeps& w) {
+    const auto& methods = bench::methods();
+    Summary out;
+    out.md << "# Work-precision summary (sweep: " << w.b.name << ")\n\n"
+           << "Error: the larger of the angle between R and the reference (rad) and |Omega - Omega_ref| / max|Omega|, "
+              "largest over the output times. Run time: integration only, minimum over "
+           << w.b.repeats << " repetitions. Time to " << sci(w.target, 0)
+           << ": interpolated on the lower envelope of the sweep. Reference: Taylor degree 24 in long double.\n";
+    for (std::size_t si = 0; si < w.all.size(); ++si) summarize_scenario(scene, out, w, si);
+    scene.report.table("by_method",
+                       {"key", "scenario", "method", "best_error", "best_time_s", "time_to_target_s",
+                        "speedup_vs_rk8pd", "orthogonality", "energy_drift", "momentum_drift"},
+                       out.rows, false);
+    out.md << "\nMethods: ";
+    for (std::size_t mi = 0; mi < methods.size(); ++mi) out.md << (mi ? ", " : "") << mi << " = " << methods[mi].name;
+    out.md << ". Scenarios: ";
+    for (std::size_t si = 0; si < w.all.size(); ++si) out.md << (si ? ", " : "") << si << " = " << w.all[si].name;
+    out.md << ".\n";
+    write_file(scene, "work_precision.md", out.md.str());
+    summary_headline(scene, w, out);
 }
 
 // "Order is slope": for each fixed-step method on each scenario, the least-squares slope of
