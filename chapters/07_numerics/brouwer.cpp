@@ -140,6 +140,16 @@ void report(kit::Report& r, const Params& p, const Problem& pb, const Track& pla
     r.add("energy_compensated", comp.rms_energy.back(), "|H - H(0)| / f, rms at the end");
     r.add("energy_plain", plain.rms_energy.back(), "|H - H(0)| / f, rms at the end");
     r.add("time_plain_s", plain.time_s, "one run");
+    // The same exponents decade by decade: where the growth changes.
+    std::vector<std::vector<double>> rows;
+    for (double lo = 1; lo * 10 <= to * (1 + 1e-9); lo *= 10)
+        rows.push_back({std::log10(lo * 10), lo, lo * 10, exponent(pb.at, comp.rms_angle, lo, lo * 10),
+                        exponent(pb.at, plain.rms_angle, lo, lo * 10), exponent(pb.at, comp.rms_energy, lo, lo * 10),
+                        exponent(pb.at, plain.rms_energy, lo, lo * 10)});
+    r.table("by_decade",
+            {"decade", "from_periods", "to_periods", "phase_compensated", "phase_plain", "energy_compensated",
+             "energy_plain"},
+            rows);
 }
 
 void draw(kit::Scene& scene, const Params& p, const Problem& pb, const Track& plain, const Track& comp) {
