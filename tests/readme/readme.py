@@ -2,8 +2,8 @@
 """The commands the workbook's pages tell a user to type, and what runs them.
 
 Every ```sh block of the front page (README.md), the instructor's manual
-(tests/grading/README.md), the maintainers' page (cmake/README.md) and each chapter's
-"Check your work" follows a marker line that says what runs it, exactly as written:
+(tests/grading/README.md), the maintainers' page (cmake/README.md), the contributors' page
+(.github/CONTRIBUTING.md) and each chapter's "Check your work" follows a marker line that says what runs it, exactly as written:
 
     <!-- run by test: NAME -->     the CTest test NAME runs it (tests/readme/*.sh read it from here)
     <!-- run by .ci/run -->        .ci/run runs each of its lines as written
@@ -66,7 +66,7 @@ def blocks(path):
 
 
 def pages(root):
-    found = [root / "README.md", root / "tests/grading/README.md", root / "cmake/README.md"]
+    found = [root / "README.md", root / "tests/grading/README.md", root / "cmake/README.md", root / ".github/CONTRIBUTING.md"]
     found += sorted((root / "chapters").glob("[0-9][0-9]_*/README.md"))
     return [p for p in found if p.exists()]
 

@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# The contributor's page (.github/CONTRIBUTING.md) as a contributor follows it, in a scratch clone
+# of the workbook with build folders of its own: each recipe's edits exactly as the page shows
+# them (contributor.py applies the files after its `<!-- example PART: ... -->` lines), then each
+# command of the page's blocks marked for this test, exactly as written.
+#
+#   contributor.sh <root> <work> [--plant scene-cmake|hint|contents]
+#
+# 1. A scene: hello_rotation builds, runs with exit 0 and a JSON report holding error and
+#    run_time_s, lists its options, and its smoke, bad-input and corner tests pass.
+# 2. An exercise: rotation_angle, once committed, has its Hint 1; `check rotation_angle` on the
+#    stub says "not started"; the hint lint finds its ladder; its grader passes on solutions/ and
+#    the stub gate of the topic passes (every test passes on solutions/ and fails on the stubs).
+# 3. A chapter: the skeleton Chapter 9 is read from the contents (contents.json, scenes-09
+#    builds and runs its scene) and passes the book's structure, names and numbers checks and
+#    the command-block check.
+# Every C++ file the examples touch must already be laid out as .clang-format says.
+# --plant leaves out one step of the page (the scene's CMake lines, the hint ladder, the row of
+# the contents): the walk must then fail (the self-test of this test).
+set -uo pipefail
+root=$1 work=$2 plant=${3:-} what=${4:-}
+here=$(cd "$(dirname "$0")" && pwd)
+page=.github/CONTRIBUTING.md
+marker="<!-- run by test: readme: a contributor adds a scene, an exercise and a chapter as .github/CONTRIBUTING.md says -->"
+fail() { echo "FAILED: $*" >&2; exit 1; }
+
+skip=()
+if [[ $plant == --plant ]]; then
+  case $what in
+    scene-cmake) skip=(--skip chapters/01_pure_rotations/CMakeLists.txt) ;;
+    hint) skip=(--skip exercises/hints.md) ;;
+    contents) skip=(--skip chapters/README.md) ;;
+    *) fail "unknown planted fault '$what' (scene-cmake, hint or contents)" ;;
+  esac
+  echo "== Planted: the walk leaves out the page's edit of ${skip[1]}"
+fi
+
+rm -rf "$work" && mkdir -p "$work"
+python3 "$here/readme.py" scratch "$root" "$work/workbook" || fail "cannot make the scratch clone"
+cd "$work/workbook" || fail "no scratch clone"
+export GIT_AUTHOR_NAME=contributor GIT_AUTHOR_EMAIL=contributor@localhost
+export GIT_COMMITTER_NAME=contributor GIT_COMMITTER_EMAIL=contributor@localhost
+[[ -f $page ]] || fail "$page is missing"
+
+# run <expected status: 0 or 1 (non-zero)> <line> [what the output must hold]...
+n=0
+run() {
+  local want=$1 line=$2 status start=$SECONDS
+  shift 2
+  n=$((n + 1))
+  local log=$work/step$n.txt
+  echo "\$ $line"
+  bash -c "$line" >"$log" 2>&1
+  status=$?
+  echo "  (exit $status, $((SECONDS - start)) s)"
+  sed 's/^/  | /' "$log" | tail -n 15
+  [[ ($want == 0 && $status -eq 0) || ($want == 1 && $status -ne 0) ]] || fail "'$line' exited with status $status"
+  for text in "$@"; do grep -qF -- "$text" "$log" || fail "'$line' did not say: $text"; done
+  last=$log
+}
+
+# apply <part>: the page's edits of one recipe; the C++ files it touched must be formatted.
+apply() {
+  python3 "$here/contributor.py" apply "$page" "$1" . "${skip[@]}" || fail "cannot apply the page's $1 example"
+  if command -v clang-format >/dev/null; then
+    while read -r f; do
+      [[ $f == *.cpp || $f == *.hpp ]] || continue
+      [[ -f $f ]] || continue
+      clang-format --dry-run --Werror "$f" 2>"$work/format.txt" ||
+        fail "$f, as the page's $1 example leaves it, is not laid out as .clang-format says: $(head -3 "$work/format.txt")"
+    done < <(python3 "$here/contributor.py" list "$page" "$1")
+  fi
+}
+
+block() {
+  mapfile -t lines < <(python3 "$here/readme.py" block "$page" "$marker" "$1")
+  [[ ${#lines[@]} -ge 2 ]] || fail "$page: no block $1 marked for this test"
+}
+
+# 1. A scene.
+start=$SECONDS
+apply scene
+block 1
+for line in "${lines[@]}"; do
+  case $line in
+    *"--json"*)
+      run 0 "$line"
+      python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert "error" in r and "run_time_s" in r' "$last" ||
+        fail "'$line' printed no JSON report with error and run_time_s" ;;
+    *"--list-options"*) run 0 "$line" '"samples"' '"axis"' ;;
+    ctest*) run 0 "$line" "100% tests passed" "scene: hello_rotation" "bad input: hello_rotation" "corner: hello_rotation" ;;
+    *) run 0 "$line" ;;
+  esac
+done
+echo "== 1. The scene: every command of the page did what it says ($((SECONDS - start)) s)"
+
+# 2. An exercise.
+start=$SECONDS
+apply exercise
+block 2
+for line in "${lines[@]}"; do
+  case $line in
+    *"check rotation_angle --hint 1"*) run 0 "$line" "Hint 1 of 3 for rotation_angle" ;;
+    *"check rotation_angle"*) run 1 "$line" "rotation_angle" "not started" ;;
+    *"workbook_hints lint"*) run 0 "$line" "0 problem(s)" ;;
+    ctest*) run 0 "$line" "100% tests passed" "ch01:rotation_angle:" ;;
+    *stub_gate*) run 0 "$line" ;;
+    *) run 0 "$line" ;;
+  esac
+done
+grep -q "^exercise	rotation	rotation_angle	" build/exercises/grading/manifest.txt ||
+  fail "the grading manifest does not list rotation_angle"
+echo "== 2. The exercise: hint, not started on the stub, passes on the reference, the stub gate ($((SECONDS - start)) s)"
+
+# 3. A chapter.
+start=$SECONDS
+apply chapter
+block 3
+for line in "${lines[@]}"; do
+  case $line in
+    ctest*) run 0 "$line" "100% tests passed" "book: every chapter is a lesson" "readme: every command block" ;;
+    *) run 0 "$line" ;;
+  esac
+done
+python3 -c 'import json,sys; assert any(c["folder"] == "09_sandbox" and c["label"] == "ch09" for c in json.load(open(sys.argv[1]))["chapters"])' \
+  build/solutions/contents.json || fail "CMake did not read Chapter 9 from the contents"
+ls build/solutions/figures/09_sandbox/sandbox_spin.json >/dev/null 2>&1 || fail "scenes-09 did not run the chapter's scene"
+echo "== 3. The chapter: in the build, its scene runs, the book's checks pass ($((SECONDS - start)) s)"
+echo "== The contributor's walk: every recipe of $page did what the page says"
