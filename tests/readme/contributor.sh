@@ -4,19 +4,21 @@
 # them (contributor.py applies the files after its `<!-- example PART: ... -->` lines), then each
 # command of the page's blocks marked for this test, exactly as written.
 #
-#   contributor.sh <root> <work> [--plant scene-cmake|hint|contents]
+#   contributor.sh <root> <work> [--plant scene-cmake|hint|contents|topic]
 #
 # 1. A scene: hello_rotation builds, runs with exit 0 and a JSON report holding error and
 #    run_time_s, lists its options, and its smoke, bad-input and corner tests pass.
 # 2. An exercise: rotation_angle, once committed, has its Hint 1; `check rotation_angle` on the
 #    stub says "not started"; the hint lint finds its ladder; its grader passes on solutions/ and
 #    the stub gate of the topic passes (every test passes on solutions/ and fails on the stubs).
-# 3. A chapter: the skeleton Chapter 9 is read from the contents (contents.json, scenes-09
-#    builds and runs its scene) and passes the book's structure, names and numbers checks and
-#    the command-block check.
+# 3. A chapter: the skeleton Chapter 9 with its topic sandbox is read from the contents
+#    (contents.json, scenes-09 builds and runs its scene), its grader passes on solutions/ and
+#    its stub gate passes, the book's structure, names and numbers checks and the command-block
+#    check pass, and its own Check your work runs as written on a finished workbook.
 # Every C++ file the examples touch must already be laid out as .clang-format says.
 # --plant leaves out one step of the page (the scene's CMake lines, the hint ladder, the row of
-# the contents): the walk must then fail (the self-test of this test).
+# the contents, the new topic's workbook_topic line): the walk must then fail (the self-test of
+# this test).
 set -uo pipefail
 root=$1 work=$2 plant=${3:-} what=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -30,7 +32,8 @@ if [[ $plant == --plant ]]; then
     scene-cmake) skip=(--skip chapters/01_pure_rotations/CMakeLists.txt) ;;
     hint) skip=(--skip exercises/hints.md) ;;
     contents) skip=(--skip chapters/README.md) ;;
-    *) fail "unknown planted fault '$what' (scene-cmake, hint or contents)" ;;
+    topic) skip=(--skip CMakeLists.txt) ;;
+    *) fail "unknown planted fault '$what' (scene-cmake, hint, contents or topic)" ;;
   esac
   echo "== Planted: the walk leaves out the page's edit of ${skip[1]}"
 fi
@@ -118,6 +121,7 @@ apply chapter
 block 3
 for line in "${lines[@]}"; do
   case $line in
+    *"-R '^ch09:'"*) run 0 "$line" "100% tests passed" "ch09:quarter_turns:" ;;
     ctest*) run 0 "$line" "100% tests passed" "book: every chapter is a lesson" "readme: every command block" ;;
     *) run 0 "$line" ;;
   esac
@@ -125,5 +129,18 @@ done
 python3 -c 'import json,sys; assert any(c["folder"] == "09_sandbox" and c["label"] == "ch09" for c in json.load(open(sys.argv[1]))["chapters"])' \
   build/solutions/contents.json || fail "CMake did not read Chapter 9 from the contents"
 ls build/solutions/figures/09_sandbox/sandbox_spin.json >/dev/null 2>&1 || fail "scenes-09 did not run the chapter's scene"
-echo "== 3. The chapter: in the build, its scene runs, the book's checks pass ($((SECONDS - start)) s)"
+# The new chapter's Check your work, as chapters.sh runs every chapter's: on a finished workbook.
+cp solutions/sandbox.cpp exercises/sandbox.cpp
+mapfile -t lines < <(python3 "$here/readme.py" block chapters/09_sandbox/README.md \
+  "<!-- run by test: readme: every chapter's Check your work, on a finished workbook -->")
+[[ ${#lines[@]} -ge 2 ]] || fail "chapters/09_sandbox/README.md: no Check your work block"
+for line in "${lines[@]}"; do
+  case $line in
+    "cmake/workbook check "*) run 0 "$line" "Chapter 9, A sandbox chapter: 1 of 1 exercises pass" ;;
+    "cmake/workbook scenes "*) run 0 "$line" "Your code: sandbox" "sandbox_spin" ;;
+    *) run 0 "$line" ;;
+  esac
+done
+git checkout -q exercises/sandbox.cpp
+echo "== 3. The chapter: in the build, its graders and stub gate, the book's checks, its Check your work ($((SECONDS - start)) s)"
 echo "== The contributor's walk: every recipe of $page did what the page says"
