@@ -339,22 +339,23 @@ function(workbook_scene_rejects scene label)
   set_tests_properties("bad input: ${scene} ${label}" PROPERTIES LABELS "scene;bad-input" TIMEOUT 60)
 endfunction()
 
-# A scene whose own check fails, or whose numerics fail: exit status 1, MESSAGE (a regex) on
-# stderr, and no file left behind.
+# A case a scene must serve: input inside its documented ranges (often where it once failed its
+# own check), run with --json --no-figure. It must exit 0, and each EXPECT key of its JSON report
+# (a.b for a nested one; a boolean reads ON or OFF) must match its regex. A corner test, named
+# "corner: <scene> <label>", like the corner sweep's.
 #
-#   workbook_scene_fails(<scene> <label> MESSAGE <regex> ARGS <arg>...)
-function(workbook_scene_fails scene label)
-  cmake_parse_arguments(R "" "MESSAGE" "ARGS" ${ARGN})
-  set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-fails-${label}")
-  set(args "")
-  foreach(a IN LISTS R_ARGS)
-    string(APPEND args "|${a}")
-  endforeach()
-  add_test(NAME "check fails: ${scene} ${label}"
-           COMMAND ${CMAKE_COMMAND} -DEXPECT=1 -DOUT=${out} "-DMESSAGE=${R_MESSAGE}"
-                   "-DCOMMAND=$<TARGET_FILE:${scene}>|--out|${out}${args}"
+#   workbook_scene_case(<scene> <label> ARGS <arg>... [EXPECT <key>=<regex>...])
+function(workbook_scene_case scene label)
+  cmake_parse_arguments(C "" "" "ARGS;EXPECT" ${ARGN})
+  get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+  set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-case-${label}")
+  string(JOIN "|" args ${C_ARGS})
+  string(JOIN "|" keys ${C_EXPECT})
+  add_test(NAME "corner: ${scene} ${label}"
+           COMMAND ${CMAKE_COMMAND} -DEXPECT=0 -DOUT=${out} "-DKEYS=${keys}"
+                   "-DCOMMAND=$<TARGET_FILE:${scene}>|--json|--no-figure|--out|${out}|${args}"
                    -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
-  set_tests_properties("check fails: ${scene} ${label}" PROPERTIES LABELS "scene;bad-input" TIMEOUT 60)
+  set_tests_properties("corner: ${scene} ${label}" PROPERTIES LABELS "corner;${chapter}" TIMEOUT 300)
 endfunction()
 
 # ------------------------------------------------------------------------------------------
