@@ -341,10 +341,11 @@ endfunction()
 
 # A case a scene must serve: input inside its documented ranges (often where it once failed its
 # own check), run with --json --no-figure. It must exit 0, and each EXPECT key of its JSON report
-# (a.b for a nested one; a boolean reads ON or OFF) must match its regex. A corner test, named
-# "corner: <scene> <label>", like the corner sweep's.
+# (a.b for a nested one; a boolean reads ON or OFF) must match its regex (key=regex; no '|' in
+# it), or be at most a number (key<=number). A corner test, named "corner: <scene> <label>", like
+# the corner sweep's.
 #
-#   workbook_scene_case(<scene> <label> ARGS <arg>... [EXPECT <key>=<regex>...])
+#   workbook_scene_case(<scene> <label> ARGS <arg>... [EXPECT <key>=<regex>|<key><=<number>...])
 function(workbook_scene_case scene label)
   cmake_parse_arguments(C "" "" "ARGS;EXPECT" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
