@@ -66,6 +66,22 @@ function(workbook_warnings target)
                          $<$<BOOL:${WORKBOOK_WERROR}>:-Werror>)
 endfunction()
 
+# ------------------------------------------------------------------------------------------
+# The support library of the workbook's own programs (cmake/tools/support/): reading and
+# writing files, trimming and splitting text, and starting a program from an argument vector,
+# never through a shell. The grading run, the stub gate, the mutation gate and the scene kit
+# link it; its tests (support_test.cpp) prove each piece can fail.
+function(workbook_support)
+  set(dir "${WORKBOOK_ROOT}/cmake/tools/support")
+  add_library(workbook_support STATIC "${dir}/file.cpp" "${dir}/text.cpp" "${dir}/process.cpp")
+  target_include_directories(workbook_support PUBLIC "${WORKBOOK_ROOT}/cmake/tools")
+  workbook_warnings(workbook_support)
+  add_executable(support_test "${dir}/support_test.cpp")
+  target_link_libraries(support_test PRIVATE workbook_support doctest::doctest)
+  workbook_warnings(support_test)
+  doctest_discover_tests(support_test TEST_PREFIX "support: " PROPERTIES LABELS grading TIMEOUT 60)
+endfunction()
+
 # Where a topic's implementation comes from: "solutions", "exercises", or a folder.
 function(workbook_resolve_impl)
   if(WORKBOOK_IMPL STREQUAL "solutions")

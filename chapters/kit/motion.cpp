@@ -7,12 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
+
+#include "support/process.hpp"
 
 namespace kit {
 
@@ -201,18 +202,16 @@ void write_gif(const std::vector<Motion>& bodies, const fs::path& gif, const fs:
     }
     gp << "unset output\n";
     std::ofstream(script) << gp.str();
-    const fs::path log = script.string() + ".log";
-    const int rc = std::system(("gnuplot -d '" + script.string() + "' 2>'" + log.string() + "'").c_str());
+    // gnuplot from its argument vector, no shell between (cmake/tools/support/process.hpp).
+    const support::Result r = support::run({"gnuplot", "-d", script.string()});
     std::error_code ec;
     const auto size = fs::exists(gif) ? fs::file_size(gif) : 0;
-    if (rc != 0 || size == 0) {
-        std::string why;
-        if (std::ifstream in(log); in) why.assign(std::istreambuf_iterator<char>(in), {});
+    if (r.status != 0 || size == 0) {
+        const std::string why = r.error + r.err;
         throw NumericalFailure("--motion: gnuplot did not draw " + gif.string() + " (exit status " +
-                               std::to_string(rc) + "): " + why.substr(0, 400));
+                               std::to_string(r.status) + "): " + why.substr(0, 400));
     }
     fs::remove(script, ec);
-    fs::remove(log, ec);
     if (size > 2'000'000)
         throw NumericalFailure("--motion: the animated GIF has " + std::to_string(size) +
                                " bytes; it must stay under 2 MB");

@@ -20,15 +20,20 @@
 #include <string>
 #include <vector>
 
+#include "support/file.hpp"
+#include "support/text.hpp"
+
 namespace grading {
 
 inline constexpr const char* harness_version = "workbook_grade 1";
 
 // ---- text and files (util.cpp) ----------------------------------------------------------
-std::string read_file(const std::string& path, bool* ok = nullptr);
-bool write_file(const std::string& path, const std::string& text);  // via a temporary + rename
-std::vector<std::string> split(const std::string& s, char separator);
-std::string trim(const std::string& s);
+// read_file, write_file (via a temporary + rename), split and trim: the support library's
+// (cmake/tools/support/), shared with the workbook's other programs.
+using support::read_file;
+using support::split;
+using support::trim;
+using support::write_file;
 bool starts_with(const std::string& s, const std::string& prefix);
 bool ends_with(const std::string& s, const std::string& suffix);
 std::string replace_all(std::string s, const std::string& from, const std::string& to);

@@ -7,6 +7,9 @@
 #include <regex>
 #include <sstream>
 
+#include "support/file.hpp"
+#include "support/text.hpp"
+
 namespace hints {
 
 namespace {
@@ -19,11 +22,7 @@ std::vector<std::string> lines_of(const std::string& text) {
     return out;
 }
 
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return "";
-    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
+using support::trim;
 
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 
@@ -361,15 +360,14 @@ Hints parse(const std::string& text, const std::string& file_name) {
 }
 
 Hints read(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    bool ok = false;
+    const std::string text = support::read_file(path, &ok);
+    if (!ok) {
         Hints h;
         h.error = path + ": cannot read the hints";
         return h;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse(text.str(), path);
+    return parse(text, path);
 }
 
 const Ladder* find(const Hints& hints, const std::string& exercise) {

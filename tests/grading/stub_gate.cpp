@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -19,15 +18,16 @@
 #include <string>
 #include <vector>
 
+#include "support/process.hpp"
+
 namespace {
 
 // name -> passed, for every test case that ran to its end, from the workbook reporter's JSON
 // lines (tests/main.cpp).
 std::map<std::string, bool> run(const std::string& binary, const std::string& report_path, std::string& problem) {
     std::remove(report_path.c_str());
-    const std::string command =
-        "'" + binary + "' --reporters=workbook --out='" + report_path + "' --no-version >/dev/null 2>&1";
-    const int status = std::system(command.c_str());
+    // Its own output is not read: the report is.
+    const int status = support::run({binary, "--reporters=workbook", "--out=" + report_path, "--no-version"}).status;
     std::ifstream in(report_path);
     std::map<std::string, bool> results;
     bool finished = false;

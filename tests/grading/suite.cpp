@@ -27,6 +27,7 @@
 #include <set>
 
 #include "grading.hpp"
+#include "support/process.hpp"
 
 using namespace grading;
 
@@ -94,22 +95,24 @@ const Expect* expectation(const std::vector<Expect>& expects, const TestResult& 
     return best;
 }
 
-std::string quote(const std::string& s) { return "'" + replace_all(s, "'", "'\\''") + "'"; }
-
 // Starts `workbook_grade grade ...` with its output into a file; returns its process id.
 pid_t start_grading(const std::vector<std::string>& argv, const std::string& output) {
+    support::RunOptions to_file;
+    to_file.stdout_file = output;
+    to_file.stderr_to_stdout = true;
+    return support::spawn(argv, to_file);
+}
+
+// Runs it to its end, its stdout into a file (none: into the suite's; its stderr shows in the
+// suite's); its exit status.
+int run_into(const std::vector<std::string>& argv, const std::string& output = "") {
+    support::RunOptions to_file;
+    to_file.stdout_file = output;
+    const support::Result r = support::run(argv, to_file);
+    std::printf("%s", r.out.c_str());
     std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int fd = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
-        std::vector<char*> args;
-        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execv(args[0], args.data());
-        _exit(127);
-    }
-    return pid;
+    std::fprintf(stderr, "%s%s", r.err.c_str(), r.error.c_str());
+    return r.status;
 }
 
 // Waits until the file holds the text (or the process ended, or the time is up).
@@ -124,16 +127,7 @@ bool wait_for(const std::string& file, const std::string& text, pid_t pid, doubl
 }
 
 // Waits for the process at most `seconds`; its exit status, or -1 when it did not end.
-int wait_exit(pid_t pid, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    int status = 0;
-    while (std::chrono::steady_clock::now() < end) {
-        if (waitpid(pid, &status, WNOHANG) == pid)
-            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        usleep(20000);
-    }
-    return -1;
-}
+int wait_exit(pid_t pid, double seconds) { return support::wait(pid, seconds); }
 
 // Processes whose command line mentions the text (left behind by a run that should be gone).
 std::vector<std::string> processes_mentioning(const std::string& text) {
@@ -204,8 +198,15 @@ struct Suite {
     std::map<std::string, const Case*> case_of;  // student -> case
     int n = 0;
     static constexpr long max_file_kb = 64;
-    std::string subs, out, options, grade;
+    std::string subs, out;
+    // workbook_grade grade --setup <setup> <subs> <out> -j <jobs> --timeout ... --max-file-size <kb>
     std::vector<std::string> run_args;
+    // The same on another out folder.
+    std::vector<std::string> grade_args(const std::string& out_folder) const {
+        std::vector<std::string> args = run_args;
+        args[5] = out_folder;
+        return args;
+    }
     std::vector<std::string> problems;
 };
 
@@ -371,8 +372,7 @@ void check_seeded(Suite& s, std::vector<Row>& rows) {
         }
     if (students.empty()) return;
     const std::string out = s.a.work + "/out-seeded", log = s.a.work + "/seeded.txt";
-    std::vector<std::string> args = s.run_args;
-    args[5] = out;
+    std::vector<std::string> args = s.grade_args(out);
     args.insert(args.end(), {"--only", only, "--seed", "4242"});
     std::printf("== Grading %s again with the instructor's seed (--seed)\n", only.c_str());
     std::fflush(stdout);
@@ -472,8 +472,7 @@ void check_resumed(Suite& s) {
     std::fflush(stdout);
     const std::string before = csv + read_file(s.out + "/summary.md");
     const std::string again = s.a.work + "/again.txt";
-    if (std::system((s.grade + quote(s.out) + s.options + " > " + quote(again)).c_str()) != 0)
-        s.problems.push_back("the resumed run failed");
+    if (run_into(s.grade_args(s.out), again) != 0) s.problems.push_back("the resumed run failed");
     if (read_file(again).find("Graded 0 submissions") == std::string::npos)
         s.problems.push_back("the resumed run graded again: " + read_file(again));
     if (read_file(s.out + "/class.csv") + read_file(s.out + "/summary.md") != before)
@@ -490,8 +489,9 @@ void check_deterministic(Suite& s) {
     std::printf("== Grading %s again from scratch\n", only.c_str());
     std::fflush(stdout);
     const std::string out2 = s.a.work + "/out-again";
-    if (std::system((s.grade + quote(out2) + s.options + " --only " + quote(only)).c_str()) != 0)
-        s.problems.push_back("the repeated run failed");
+    std::vector<std::string> args = s.grade_args(out2);
+    args.insert(args.end(), {"--only", only});
+    if (run_into(args) != 0) s.problems.push_back("the repeated run failed");
     for (const auto& x : subset)
         for (const char* ext : {".json", ".tsv"})
             if (!same_file(s.out + "/results/" + x + ext, out2 + "/results/" + x + ext))
@@ -506,10 +506,11 @@ void check_student_check(Suite& s) {
         std::printf("== The student's check of %s\n", student.c_str());
         std::fflush(stdout);
         const std::string check_out = work + "/check";
-        std::system((quote(s.a.harness) + " check --setup " + quote(s.a.setup_dir) + " --folder " +
-                     quote(s.subs + "/" + student + "/exercises") + " --out " + quote(check_out) + s.options + " > " +
-                     quote(work + "/check.txt"))
-                        .c_str());
+        std::vector<std::string> args = {s.a.harness,   "check",    "--setup",
+                                         s.a.setup_dir, "--folder", s.subs + "/" + student + "/exercises",
+                                         "--out",       check_out};
+        args.insert(args.end(), s.run_args.begin() + 6, s.run_args.end());
+        run_into(args, work + "/check.txt");
         const std::string mine = read_file(check_out + "/results.json"),
                           theirs = read_file(s.out + "/results/" + student + ".json");
         const auto from_mine = mine.find("\"tests\": ["), from_theirs = theirs.find("\"tests\": [");
@@ -538,8 +539,7 @@ void check_interrupted(Suite& s) {
     std::string list;
     for (const auto& x : some) list += (list.empty() ? "" : ",") + x;
     const std::string out3 = s.a.work + "/out-interrupted", log3 = s.a.work + "/interrupted.txt";
-    std::vector<std::string> args = s.run_args;
-    args[5] = out3;
+    std::vector<std::string> args = s.grade_args(out3);
     args.insert(args.end(), {"--only", list});
     std::printf("== SIGTERM to a run grading %s, then the run again\n", list.c_str());
     const pid_t run = start_grading(args, log3);
@@ -606,8 +606,6 @@ int main(int argc, char** argv) {
     if (const auto problem = make_submissions(s); !problem.empty())
         return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
     const std::string jobs = std::to_string(s.a.jobs), max_kb = std::to_string(Suite::max_file_kb);
-    s.options = " -j " + jobs + " --timeout " + s.a.timeout + " --memory 512 --max-file-size " + max_kb;
-    s.grade = quote(s.a.harness) + " grade --setup " + quote(s.a.setup_dir) + " " + quote(s.subs) + " ";
     s.run_args = {s.a.harness, "grade",    "--setup", s.a.setup_dir,     s.subs, s.out, "-j", jobs, "--timeout",
                   s.a.timeout, "--memory", "512",     "--max-file-size", max_kb};
     const double wall = first_run(s);

@@ -34,6 +34,10 @@
 #include <string>
 #include <vector>
 
+#include "support/file.hpp"
+#include "support/process.hpp"
+#include "support/text.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -66,17 +70,13 @@ struct Options {
 }
 
 std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) die("cannot read " + path.string());
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    bool ok = false;
+    std::string text = support::read_file(path.string(), &ok);
+    if (!ok) die("cannot read " + path.string());
+    return text;
 }
 
-std::string trim(const std::string& s) {
-    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t\r");
-    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
+using support::trim;
 
 // ---- Where code is: a mask over the file, false inside comments, literals and # lines. ----
 
@@ -614,18 +614,12 @@ pid_t start_check(const Options& o, const Mutant& m, const fs::path& folder, con
     // A helper's mutant: every topic (the others are missing from the submission, so not built;
     // naming the topic could select an exercise of the same name, such as heavy_top).
     if (m.exercise && !whole_topic) args.push_back(m.function);
-    const std::string log = out.string() + ".log";
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const pid_t pid = fork();
-    if (pid < 0) die("cannot fork");
-    if (pid == 0) {
-        if (!std::freopen(log.c_str(), "w", stdout) || dup2(fileno(stdout), 2) < 0) _exit(127);
-        execv(argv[0], argv.data());
-        std::perror("workbook_mutants: cannot start workbook_grade");
-        _exit(127);
-    }
+    support::RunOptions output;
+    output.stdout_file = out.string() + ".log";
+    output.stderr_to_stdout = true;
+    std::string error;
+    const pid_t pid = support::spawn(args, output, &error);
+    if (pid < 0) die("cannot start workbook_grade: " + error);
     return pid;
 }
 
