@@ -1,6 +1,6 @@
 // A doctest reporter that does nothing: the base of every listener and reporter of the graders
-// (the reseeding and the verdicts of tests/main.cpp, the recorder's end marker and the replay's
-// loader in tests/grading/replay/), each overriding only the events it acts on.
+// (the reseeding of tests/main.cpp, the verdicts of tests/grading/reporter.cpp, the judge's in
+// tests/grading/remote/), each overriding only the events it acts on.
 #pragma once
 
 #include <doctest/doctest.h>

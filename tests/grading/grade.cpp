@@ -29,7 +29,7 @@ std::string indent(const std::string& text, const std::string& prefix) {
     return out;
 }
 
-// What the judge's reporter said about one test case (tests/main.cpp, JSON lines).
+// What the judge's reporter said about one test case (reporter.cpp, JSON lines).
 struct Said {
     bool started = false, ended = false, success = false;
     int failed_checks = 0;

@@ -1,4 +1,4 @@
-// The workbook reporter (tests/main.cpp) must name, for a test that fails by an exception, the
+// The workbook reporter (reporter.cpp) must name, for a test that fails by an exception, the
 // other exercises the test said it uses (ALSO_USES): the exception may come from their code, and
 // the student must see which. This test throws with one in scope; ctest requires the reporter's
 // exception event to carry that line.

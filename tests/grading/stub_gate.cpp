@@ -23,7 +23,7 @@
 namespace {
 
 // name -> passed, for every test case that ran to its end, from the workbook reporter's JSON
-// lines (tests/main.cpp).
+// lines (tests/grading/reporter.cpp).
 std::map<std::string, bool> run(const std::string& binary, const std::string& report_path, std::string& problem) {
     std::remove(report_path.c_str());
     // Its own output is not read: the report is.

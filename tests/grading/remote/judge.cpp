@@ -1,5 +1,5 @@
 // The judge's state (judge.hpp): the first problem found in this test case, the number of calls
-// made, the open frames; and the verdict that the reporter (tests/main.cpp) asks for at the end.
+// made, the open frames; and the verdict that the reporter (tests/grading/reporter.cpp) asks for at the end.
 #include "judge.hpp"
 
 #include <doctest/doctest.h>
@@ -119,7 +119,7 @@ void answer_callback(const std::string& message, const std::string& what) {
 
 }  // namespace workbook_remote::judge
 
-// Asked by the verdict reporter (tests/main.cpp) when the test case ends: the messages that went
+// Asked by the verdict reporter (tests/grading/reporter.cpp) when the test case ends: the messages that went
 // both ways (each a round trip), for the run's timing log.
 extern "C" unsigned long long workbook_remote_round_trips() { return workbook_remote::judge::round_trips(); }
 
@@ -128,7 +128,7 @@ extern "C" unsigned long long workbook_remote_round_trips() { return workbook_re
 // on seeded inputs.
 extern "C" unsigned long long workbook_remote_sent_hash() { return workbook_remote::judge::sent_hash(); }
 
-// Asked by the verdict reporter (tests/main.cpp) when the test case ends: empty, or why the
+// Asked by the verdict reporter (tests/grading/reporter.cpp) when the test case ends: empty, or why the
 // test cannot pass although its checks may have.
 extern "C" const char* workbook_remote_verdict() {
     static std::string answer;
