@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "grading.hpp"
@@ -140,7 +141,8 @@ double share(double points, std::size_t tests, std::size_t k) {
 }
 
 struct Run {
-    std::string verdict, message;
+    std::optional<Verdict> verdict;  // none: not decided yet
+    std::string message;
     bool not_started = false;
 };
 
@@ -148,18 +150,19 @@ struct Run {
 // was killed by a signal. Empty otherwise.
 Run student_end(const Outcome& o, const Options& options) {
     const double limit = options.test_limits.wall_seconds;
-    if (!o.started) return {"crash", "could not start the test: " + o.error};
+    if (!o.started) return {Verdict::crash, "could not start the test: " + o.error};
     if (o.stopped) return {};  // killed by the harness once the judge was done: decide() says so
     if (o.timed_out)
-        return {"timeout", "timed out after " + format_number(limit) +
-                               " s and was stopped: an endless loop, or far too much work?"};
+        return {Verdict::timeout, "timed out after " + format_number(limit) +
+                                      " s and was stopped: an endless loop, or far too much work?"};
     if (o.signal == SIGXCPU)
-        return {"timeout", "used more than " + format_number(limit) + " s of processor time and was stopped"};
+        return {Verdict::timeout, "used more than " + format_number(limit) + " s of processor time and was stopped"};
     if (o.signal == SIGXFSZ)
-        return {"crash", "output limit exceeded: the test wrote more than " +
-                             std::to_string(options.test_limits.output_bytes) + " bytes and was stopped (SIGXFSZ)"};
-    if (o.signal == SIGSYS) return {"crash", "crashed with SIGSYS (a system call of another architecture)"};
-    if (o.signal) return {"crash", "crashed with " + signal_name(o.signal)};
+        return {Verdict::crash, "output limit exceeded: the test wrote more than " +
+                                    std::to_string(options.test_limits.output_bytes) +
+                                    " bytes and was stopped (SIGXFSZ)"};
+    if (o.signal == SIGSYS) return {Verdict::crash, "crashed with SIGSYS (a system call of another architecture)"};
+    if (o.signal) return {Verdict::crash, "crashed with " + signal_name(o.signal)};
     return {};
 }
 
@@ -178,32 +181,32 @@ std::string failure_message(const Said& said) {
 // student's process printed or wrote counts.
 Run decide(const Setup& setup, const Outcome& student, const Outcome& judged, const std::string& verdict_lines,
            const Test& test, const Options& options) {
-    if (Run r = student_end(student, options); !r.verdict.empty()) return r;
+    if (Run r = student_end(student, options); r.verdict) return r;
     const std::string status = student.stopped ? "did not end when the test was over"
                                                : "exited with status " + std::to_string(student.exit_code);
-    if (!judged.started) return {"fail", "could not run the judge: " + judged.error};
+    if (!judged.started) return {Verdict::fail, "could not run the judge: " + judged.error};
     if (judged.timed_out)
-        return {"timeout", "timed out after " + format_number(options.test_limits.wall_seconds) +
-                               " s and was stopped: an endless loop, or far too much work?"};
+        return {Verdict::timeout, "timed out after " + format_number(options.test_limits.wall_seconds) +
+                                      " s and was stopped: an endless loop, or far too much work?"};
     const Said said = read_verdict(setup, verdict_lines, test.name);
     if (judged.signal || !said.ended)
-        return {"fail",
+        return {Verdict::fail,
                 "the judge " +
                     (judged.signal ? "was killed by " + signal_name(judged.signal) : "ended without a verdict") +
                     (said.remote.empty() ? "" : ": " + said.remote)};
     if (!said.remote.empty()) {
         if (said.remote.find("ended inside this call") != std::string::npos ||
             said.remote.find("process is gone") != std::string::npos)
-            return {"fail", "the test did not finish: the submission's process " + status +
-                                " during the test (exit(), quick_exit() or _exit() in the exercise code?); " +
-                                said.remote};
-        return {"fail", said.remote};
+            return {Verdict::fail, "the test did not finish: the submission's process " + status +
+                                       " during the test (exit(), quick_exit() or _exit() in the exercise code?); " +
+                                       said.remote};
+        return {Verdict::fail, said.remote};
     }
     if (said.success) {
-        if (student.exit_code == 0 && !student.stopped) return {"pass", ""};
-        return {"fail", "the test passed but then the submission's process " + status};
+        if (student.exit_code == 0 && !student.stopped) return {Verdict::pass, ""};
+        return {Verdict::fail, "the test passed but then the submission's process " + status};
     }
-    return {"fail", failure_message(said)};
+    return {Verdict::fail, failure_message(said)};
 }
 
 }  // namespace
@@ -308,9 +311,10 @@ struct Grading {
 // A topic's student binary, built from the student's file in the build sandbox: compiled with the
 // build's flags against the API headers alone, checked (object_problem), linked with the
 // student's side of the API and the reference libraries of its dependencies. Returns an empty
-// verdict, or "build error" with the problem.
+// verdict, or build error with the problem.
 struct Built {
-    std::string verdict, problem, binary, job;
+    std::optional<Verdict> verdict;
+    std::string problem, binary, job;
 };
 
 // The command with the view's folders and the files filled in.
@@ -383,27 +387,27 @@ Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& fil
     const std::string log = g.work_dir + "/logs/" + topic.name + ".txt";
     std::string job;
     Built b;
-    if (auto problem = make_job(g.options.stage, job); !problem.empty()) return {"build error", problem, "", ""};
+    if (auto problem = make_job(g.options.stage, job); !problem.empty()) return {Verdict::build_error, problem, "", ""};
     b.binary = job + "/bin/serve_" + topic.name;
     b.job = job;
     const std::string source = job + "/exercises/" + topic.name + ".cpp";
     if (!write_file(source, file.content) || chmod(source.c_str(), 0644) != 0)
-        return {"build error", "cannot write " + source, "", job};
+        return {Verdict::build_error, "cannot write " + source, "", job};
     Outcome o = compile(g, topic, file.content, job, log);
     std::string text = g.relative(read_file(log));
     std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
     const std::string object = job + "/obj/" + topic.name + ".o";
     if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
-        b.verdict = "build error", b.problem = build_problem(o, "compiler", text, g.options.build_limits);
+        b.verdict = Verdict::build_error, b.problem = build_problem(o, "compiler", text, g.options.build_limits);
     } else if (const std::string why = object_problem(g.setup, object, g.work_dir, g.options); !why.empty()) {
-        b.verdict = "build error", b.problem = "exercises/" + topic.name + ".cpp " + why;
+        b.verdict = Verdict::build_error, b.problem = "exercises/" + topic.name + ".cpp " + why;
         build_log += "$ nm exercises/" + topic.name + ".o\n" + b.problem + "\n";
     } else {
         o = link(g, topic, job, log);
         text = g.relative(read_file(log));
         build_log += "$ link with the student's side of " + topic.name + "'s API\n" + first_lines(text, 200000);
         if (!o.started || o.timed_out || o.signal || o.exit_code != 0)
-            b.verdict = "build error", b.problem = build_problem(o, "linker", text, g.options.build_limits);
+            b.verdict = Verdict::build_error, b.problem = build_problem(o, "linker", text, g.options.build_limits);
     }
     if (!g.log_dir.empty()) write_file(g.log_dir + "/" + topic.name + ".build.txt", build_log);
     return b;
@@ -480,10 +484,10 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
         char line[96];
         std::snprintf(line, sizeof line, "\t%.4f\t%llu\t%016llx\n", pair.judged.seconds, said.round_trips, said.sent);
         const std::string timing = g.log_dir + "/timing.tsv";
-        write_file(timing, read_file(timing) + test.name + "\t" + r.verdict + line);
+        write_file(timing, read_file(timing) + test.name + "\t" + to_string(*r.verdict) + line);
     }
     // An exercise whose body is still the stub's todo("<name>") is not started.
-    if (r.verdict == "fail" && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
+    if (r.verdict == Verdict::fail && file.content.find("todo(\"" + exercise.name + "\")") != std::string::npos) {
         r.not_started = true;
         r.message = "not started: todo(\"" + exercise.name + "\") is still in place";
     }
@@ -491,13 +495,13 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
                   topic.name,
                   exercise.name,
                   test.name,
-                  r.verdict,
+                  *r.verdict,
                   0,
                   share(exercise.points, exercise.tests.size(), k),
                   r.not_started,
                   g.relative(r.message),
                   ""};
-    if (tr.verdict == "pass") tr.score = tr.max_score;
+    if (tr.verdict == Verdict::pass) tr.score = tr.max_score;
     std::string printed = read_file(g.work_dir + "/logs/output.txt");
     if (printed.size() > 500) printed = first_lines(printed, 500);
     tr.output = printed;
@@ -505,10 +509,10 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
 }
 
 // Every test of a topic that cannot run (missing, refused, does not build) gets its verdict.
-void grade_unbuilt(const Grading& g, const Topic& topic, const std::string& verdict, const std::string& problem,
+void grade_unbuilt(const Grading& g, const Topic& topic, Verdict verdict, const std::string& problem,
                    SubmissionResult& result) {
-    result.notes.push_back((verdict == "build error" ? "exercises/" + topic.name + ".cpp does not build: " : "") +
-                           problem);
+    result.notes.push_back(
+        (verdict == Verdict::build_error ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
     for (const auto& exercise : topic.exercises) {
         if (!g.selected(exercise)) continue;
         for (std::size_t k = 0; k < exercise.tests.size(); ++k)
@@ -518,16 +522,16 @@ void grade_unbuilt(const Grading& g, const Topic& topic, const std::string& verd
 }
 
 void grade_topic(const Grading& g, const Topic& topic, const SubmittedFile& file, SubmissionResult& result) {
-    if (file.state != "ok") return grade_unbuilt(g, topic, "missing", file.reason, result);
+    if (file.state != "ok") return grade_unbuilt(g, topic, Verdict::missing, file.reason, result);
     const Built b = build_topic(g, topic, file);
-    if (b.verdict.empty()) {
+    if (!b.verdict) {
         for (const auto& exercise : topic.exercises) {
             if (!g.selected(exercise)) continue;
             for (std::size_t k = 0; k < exercise.tests.size(); ++k)
                 result.tests.push_back(run_test(g, topic, file, b.binary, exercise, k));
         }
     } else {
-        grade_unbuilt(g, topic, b.verdict, b.problem, result);
+        grade_unbuilt(g, topic, *b.verdict, b.problem, result);
     }
     // The job folder (in the run's stage): kept in the work folder with --keep-work, else gone.
     if (!b.job.empty() && g.options.keep_work) std::rename(b.job.c_str(), (g.work_dir + "/job-" + topic.name).c_str());
@@ -562,7 +566,7 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
 // Everything in it follows from the inputs alone, so a repeated run writes the same bytes.
 std::string results_json(const Setup& setup, const SubmissionResult& r) {
     int passed = 0;
-    for (const auto& t : r.tests) passed += t.verdict == "pass";
+    for (const auto& t : r.tests) passed += t.verdict == Verdict::pass;
     std::string summary = std::to_string(passed) + " of " + std::to_string(r.tests.size()) + " tests pass; score " +
                           format_number(r.score) + " of " + format_number(r.max_score) + ".";
     for (const auto& n : r.notes) summary += "\n" + n;
@@ -573,18 +577,18 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
         const Chapter* c = find_chapter(setup, t.chapter);
         in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
         chapter = t.chapter;
-        std::string text = t.verdict == "pass" ? "pass" : t.verdict + ": " + t.message;
+        std::string text = t.verdict == Verdict::pass ? to_string(t.verdict) : to_string(t.verdict) + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
         tests.push_back({{"name", t.name},
                          {"score", json_number(t.score)},
                          {"max_score", json_number(t.max_score)},
-                         {"status", t.verdict == "pass" ? "passed" : "failed"},
+                         {"status", t.verdict == Verdict::pass ? "passed" : "failed"},
                          {"number", (c ? std::to_string(c->number) : t.chapter) + "." + std::to_string(in_chapter)},
                          {"tags", {t.chapter, t.topic, t.exercise}},
                          {"visibility", "visible"},
                          {"output", text},
                          {"extra_data",
-                          {{"verdict", t.verdict},
+                          {{"verdict", to_string(t.verdict)},
                            {"chapter", t.chapter},
                            {"topic", t.topic},
                            {"exercise", t.exercise},
@@ -620,8 +624,8 @@ std::string results_tsv(const SubmissionResult& r, const std::string& json) {
         char score[64], max_score[64];
         std::snprintf(score, sizeof score, "%.17g", t.score);
         std::snprintf(max_score, sizeof max_score, "%.17g", t.max_score);
-        out += "test\t" + t.chapter + "\t" + t.topic + "\t" + t.exercise + "\t" + t.verdict + "\t" + score + "\t" +
-               max_score + "\t" + (t.not_started ? "1" : "0") + "\t" + flat(t.name) + "\t" +
+        out += "test\t" + t.chapter + "\t" + t.topic + "\t" + t.exercise + "\t" + to_string(t.verdict) + "\t" + score +
+               "\t" + max_score + "\t" + (t.not_started ? "1" : "0") + "\t" + flat(t.name) + "\t" +
                flat(first_lines(t.message, 300)) + "\n";
     }
     return out;
@@ -645,7 +649,9 @@ bool read_results_tsv(const std::string& path, SubmissionResult& r) {
         else if (f[0] == "note" && f.size() > 1)
             r.notes.push_back(f[1]);
         else if (f[0] == "test" && f.size() > 9) {
-            TestResult t{f[1], f[2], f[3], f[8], f[4], std::stod(f[5]), std::stod(f[6]), f[7] == "1", f[9], ""};
+            Verdict verdict = Verdict::fail;
+            if (!from_string(f[4], verdict)) return false;  // not written by this harness
+            TestResult t{f[1], f[2], f[3], f[8], verdict, std::stod(f[5]), std::stod(f[6]), f[7] == "1", f[9], ""};
             r.tests.push_back(t);
             r.score += t.score;
             r.max_score += t.max_score;

@@ -22,6 +22,7 @@
 
 #include "support/file.hpp"
 #include "support/text.hpp"
+#include "verdict.hpp"
 
 namespace grading {
 
@@ -240,7 +241,7 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
 
 struct TestResult {
     std::string chapter, topic, exercise, name;
-    std::string verdict;  // pass, fail, timeout, crash, build error, missing
+    Verdict verdict = Verdict::fail;  // pass, fail, timeout, crash, build error, missing (verdict.hpp)
     double score = 0, max_score = 0;
     bool not_started = false;  // failed on the stub's todo("<exercise>")
     std::string message;       // why it did not pass (for the student)

@@ -18,7 +18,8 @@ const std::string omega = "\xCE\xA9";             // U+03A9, inside it
 grading::SubmissionResult one_result(const std::string& student, const std::string& output) {
     grading::SubmissionResult r;
     r.student = student;
-    r.tests.push_back({"ch01", "rotation", "hat", "hat: is skew", "fail", 0, 1, false, "expected", output});
+    r.tests.push_back(
+        {"ch01", "rotation", "hat", "hat: is skew", grading::Verdict::fail, 0, 1, false, "expected", output});
     return r;
 }
 

@@ -1,6 +1,7 @@
 // Reports: the class CSV and Markdown summary (instructor), and the student's check.
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "grading.hpp"
 #include "hints.hpp"
@@ -20,7 +21,7 @@ std::string md_cell(const std::string& s) {
 }
 
 struct ExerciseStatus {
-    std::string status;  // pass, fail, not started, build error, missing, timeout, crash
+    std::optional<Verdict> status;  // pass, fail, not started, build error, missing, timeout, crash; none: not selected
     int passed = 0, total = 0;
     double score = 0;
     const TestResult* first_problem = nullptr;
@@ -29,38 +30,36 @@ struct ExerciseStatus {
 ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, const std::string& exercise) {
     ExerciseStatus s;
     int not_started = 0;
-    std::map<std::string, int> verdicts;
+    std::map<Verdict, int> verdicts;
     for (const auto& t : r.tests) {
         if (t.topic != topic || t.exercise != exercise) continue;
         ++s.total;
         s.score += t.score;
         ++verdicts[t.verdict];
-        if (t.verdict == "pass")
+        if (t.verdict == Verdict::pass)
             ++s.passed;
         else if (!s.first_problem)
             s.first_problem = &t;
         not_started += t.not_started;
     }
     if (s.total == 0)
-        s.status = "";
+        s.status.reset();
     else if (s.passed == s.total)
-        s.status = "pass";
-    else if (verdicts["build error"])
-        s.status = "build error";
-    else if (verdicts["missing"])
-        s.status = "missing";
+        s.status = Verdict::pass;
+    else if (verdicts[Verdict::build_error])
+        s.status = Verdict::build_error;
+    else if (verdicts[Verdict::missing])
+        s.status = Verdict::missing;
     else if (not_started == s.total)
-        s.status = "not started";
-    else if (verdicts["crash"])
-        s.status = "crash";
-    else if (verdicts["timeout"])
-        s.status = "timeout";
+        s.status = Verdict::not_started;
+    else if (verdicts[Verdict::crash])
+        s.status = Verdict::crash;
+    else if (verdicts[Verdict::timeout])
+        s.status = Verdict::timeout;
     else
-        s.status = "fail";
+        s.status = Verdict::fail;
     return s;
 }
-
-const char* verdict_names[] = {"pass", "fail", "timeout", "crash", "build error", "missing"};
 
 }  // namespace
 
@@ -71,7 +70,7 @@ std::string class_csv(const Setup& setup, const std::vector<SubmissionResult>& r
     out += ",problems\n";
     for (const auto& r : results) {
         int passed = 0;
-        for (const auto& t : r.tests) passed += t.verdict == "pass";
+        for (const auto& t : r.tests) passed += t.verdict == Verdict::pass;
         out += csv_field(r.student) + "," + format_number(r.score) + "," + format_number(r.max_score) + "," +
                std::to_string(passed) + "," + std::to_string(r.tests.size());
         for (const auto& topic : setup.topics)
@@ -100,10 +99,10 @@ std::string class_summary(const Setup& setup, const std::vector<SubmissionResult
     out += "| Student | Score | Pass | Fail | Timeout | Crash | Build error | Missing |\n";
     out += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& r : results) {
-        std::map<std::string, int> count;
+        std::map<Verdict, int> count;
         for (const auto& t : r.tests) ++count[t.verdict];
         out += "| " + md_cell(r.student) + " | " + format_number(r.score) + " / " + format_number(r.max_score);
-        for (const char* v : verdict_names) out += " | " + std::to_string(count[v]);
+        for (const Verdict v : test_verdicts) out += " | " + std::to_string(count[v]);
         out += " |\n";
     }
     out += "\n## Exercises\n\nHow many submissions pass each exercise completely.\n\n";
@@ -114,8 +113,8 @@ std::string class_summary(const Setup& setup, const std::vector<SubmissionResult
             int pass = 0, not_started = 0;
             for (const auto& r : results) {
                 const auto s = status_of(r, topic.name, e.name).status;
-                pass += s == "pass";
-                not_started += s == "not started";
+                pass += s == Verdict::pass;
+                not_started += s == Verdict::not_started;
             }
             out += "| " + (c ? std::to_string(c->number) + ". " + md_cell(c->title) : topic.chapter) + " | `" + e.name +
                    "` | " + format_number(e.points) + " | " + std::to_string(pass) + " | " +
@@ -147,7 +146,8 @@ namespace {
 
 // An exercise that does not pass, with the test that shows it.
 struct Problem {
-    std::string topic, exercise, status;
+    std::string topic, exercise;
+    Verdict status;
     const TestResult* test;
 };
 
@@ -166,24 +166,27 @@ Tally print_chapters(const Setup& setup, const SubmissionResult& r) {
             if (topic.chapter != chapter.label) continue;
             for (const auto& e : topic.exercises) {
                 const ExerciseStatus s = status_of(r, topic.name, e.name);
-                if (s.status.empty()) continue;  // not selected
+                if (!s.status) continue;  // not selected
                 rows.emplace_back(e.name, s);
-                if (s.status != "pass") tally.problems.push_back({topic.name, e.name, s.status, s.first_problem});
+                if (s.status != Verdict::pass)
+                    tally.problems.push_back({topic.name, e.name, *s.status, s.first_problem});
             }
         }
         if (rows.empty()) continue;
         int pass = 0;
-        for (const auto& [name, s] : rows) pass += s.status == "pass";
+        for (const auto& [name, s] : rows) pass += s.status == Verdict::pass;
         tally.pass += pass;
         tally.total += static_cast<int>(rows.size());
         std::printf("\nChapter %d, %s: %d of %zu exercises pass\n", chapter.number, chapter.title.c_str(), pass,
                     rows.size());
         for (const auto& [name, s] : rows) {
             std::string detail;
-            if (s.status != "pass" && s.status != "not started" && s.status != "missing" && s.status != "build error")
+            if (s.status != Verdict::pass && s.status != Verdict::not_started && s.status != Verdict::missing &&
+                s.status != Verdict::build_error)
                 detail = std::to_string(s.passed) + " of " + std::to_string(s.total) + " tests pass";
             char row[256];
-            std::snprintf(row, sizeof row, "  %-12s %-26s %s", s.status.c_str(), name.c_str(), detail.c_str());
+            std::snprintf(row, sizeof row, "  %-12s %-26s %s", to_string(*s.status).c_str(), name.c_str(),
+                          detail.c_str());
             std::printf("%s\n", trim(row).insert(0, "  ").c_str());
         }
     }
@@ -193,7 +196,7 @@ Tally print_chapters(const Setup& setup, const SubmissionResult& r) {
 // The first exercise to work on: the first one that fails, else the first not started.
 const Problem& first_problem(const std::vector<Problem>& problems) {
     for (const auto& p : problems)
-        if (p.status != "not started") return p;
+        if (p.status != Verdict::not_started) return p;
     return problems.front();
 }
 
@@ -201,15 +204,16 @@ const Problem& first_problem(const std::vector<Problem>& problems) {
 // started), then a nudge: Hint 1 for a started exercise, the command for the next rungs otherwise.
 void print_first(const Setup& setup, const Problem& first, const std::string& folder) {
     const TestResult& t = *first.test;
-    std::printf("\n%s: %s (%s/%s.cpp)\n", first.status == "not started" ? "Next exercise" : "First exercise to fix",
+    std::printf("\n%s: %s (%s/%s.cpp)\n",
+                first.status == Verdict::not_started ? "Next exercise" : "First exercise to fix",
                 first.exercise.c_str(), folder.c_str(), first.topic.c_str());
-    if (first.status == "not started") {
+    if (first.status == Verdict::not_started) {
         std::printf("  not started: its body is still todo(\"%s\")\n", first.exercise.c_str());
         std::printf("  a hint when you want one: cmake/workbook check %s --hint 1\n", first.exercise.c_str());
         return;
     }
-    std::printf("  test: %s\n  %s", t.name.c_str(), t.verdict.c_str());
-    if (t.verdict == "fail" || t.verdict == "build error" || t.verdict == "missing") {
+    std::printf("  test: %s\n  %s", t.name.c_str(), to_string(t.verdict).c_str());
+    if (t.verdict == Verdict::fail || t.verdict == Verdict::build_error || t.verdict == Verdict::missing) {
         std::printf(":\n");
         for (const auto& line : split(t.message, '\n')) std::printf("    %s\n", line.c_str());
     } else {
@@ -231,11 +235,11 @@ bool print_check(const Setup& setup, const SubmissionResult& r, const std::strin
         return true;
     }
     const Problem& first = first_problem(tally.problems);
-    if (first.status == "build error" || first.status == "missing") {
+    if (first.status == Verdict::build_error || first.status == Verdict::missing) {
         // The whole file is the problem, not one exercise.
         const TestResult& t = *first.test;
         std::printf("\n%s/%s.cpp: %s\n  %s\n", folder.c_str(), first.topic.c_str(),
-                    first.status == "missing" ? "not graded" : "does not build", t.message.c_str());
+                    first.status == Verdict::missing ? "not graded" : "does not build", t.message.c_str());
         const Chapter* c = find_chapter(setup, t.chapter);
         std::printf("\n%d of %d exercises pass. Check this chapter alone: cmake/workbook check %s\n", tally.pass,
                     tally.total, c ? std::to_string(c->number).c_str() : t.chapter.c_str());

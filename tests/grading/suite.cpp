@@ -327,11 +327,11 @@ void check_submission(Suite& s, const std::string& student, const Case& c, std::
     std::map<std::string, double> exercise_score;
     std::map<std::string, Row> by_key;
     for (const auto& t : r.tests) {
-        std::string want = "missing", text;
-        if (t.topic == c.topic || c.make == "reference") want = "pass";
+        std::string want = to_string(Verdict::missing), text;
+        if (t.topic == c.topic || c.make == "reference") want = to_string(Verdict::pass);
         if (t.topic == c.topic)
             if (const Expect* e = expectation(expects, t)) want = e->verdict, text = e->text;
-        const std::string got = t.not_started ? "not started" : t.verdict;
+        const std::string got = to_string(t.not_started ? Verdict::not_started : t.verdict);
         if (got != want)
             s.problems.push_back(student + ": \"" + t.name + "\": expected " + want + ", got " + got + ": " +
                                  t.message);

@@ -452,11 +452,12 @@ private:
 
     // One line per submission: its score and its verdicts.
     void report(const Item& item) {
-        std::map<std::string, int> count;
+        std::map<Verdict, int> count;
         for (const auto& t : item.result.tests) ++count[t.verdict];
         std::string verdicts;
-        for (const char* v : {"pass", "fail", "timeout", "crash", "build error", "missing"})
-            if (count[v]) verdicts += std::string(verdicts.empty() ? "" : ", ") + std::to_string(count[v]) + " " + v;
+        for (const Verdict v : test_verdicts)
+            if (count[v])
+                verdicts += std::string(verdicts.empty() ? "" : ", ") + std::to_string(count[v]) + " " + to_string(v);
         std::printf("[%*zu/%zu] %-24s %7s / %-5s %s  (%s)\n", width(), ++done_, items_.size(), item.name.c_str(),
                     format_number(item.result.score).c_str(), format_number(item.result.max_score).c_str(),
                     verdicts.c_str(),

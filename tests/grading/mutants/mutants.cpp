@@ -37,6 +37,7 @@
 #include "support/file.hpp"
 #include "support/process.hpp"
 #include "support/text.hpp"
+#include "verdict.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -76,6 +77,7 @@ std::string slurp(const fs::path& path) {
     return text;
 }
 
+using grading::Verdict;
 using support::trim;
 
 // ---- Where code is: a mask over the file, false inside comments, literals and # lines. ----
@@ -534,8 +536,8 @@ bool settle(const Options& o, Schema& sc, std::vector<Mutant>& mutants, const fs
         bool built = true, passed = true;
         for (const auto& t : r.at("tests")) {
             if (t.at("extra_data").at("topic") != sc.topic) continue;  // the other topics are missing
-            built = built && t.at("extra_data").at("verdict") != "build error";
-            passed = passed && t.at("extra_data").at("verdict") == "pass";
+            built = built && t.at("extra_data").at("verdict") != to_string(Verdict::build_error);
+            passed = passed && t.at("extra_data").at("verdict") == to_string(Verdict::pass);
         }
         if (passed) return true;
         if (built) break;  // the reference fails a test inside the schema: do not trust it
@@ -653,7 +655,7 @@ void classify(Mutant& m, const json& result, const std::map<std::string, std::st
         const auto& x = t.at("extra_data");
         if (x.at("topic") != m.topic) continue;
         const std::string verdict = x.at("verdict");
-        if (verdict == "build error") {
+        if (verdict == to_string(Verdict::build_error)) {
             const std::string why = t.at("output");
             // The grading run's own limits, not the mutant: the verdict would be the machine's.
             if (why.find("took longer than") != std::string::npos || why.find("was killed by") != std::string::npos ||
@@ -662,7 +664,7 @@ void classify(Mutant& m, const json& result, const std::map<std::string, std::st
                     "): run again on a quieter machine or with a larger --build-timeout");
             build_error = true;
         }
-        if (verdict != "pass" && (!m.exercise || x.at("exercise") == m.function)) {
+        if (verdict != to_string(Verdict::pass) && (!m.exercise || x.at("exercise") == m.function)) {
             killed = true;
             if (m.evidence.empty()) m.evidence = verdict + ": " + t.at("name").get<std::string>();
         }
