@@ -6,7 +6,7 @@ target_sources(workbook_grading PRIVATE "${CMAKE_CURRENT_LIST_DIR}/hints.cpp" "$
 
 add_executable(workbook_hints "${CMAKE_CURRENT_LIST_DIR}/workbook_hints.cpp" "${CMAKE_CURRENT_LIST_DIR}/hints.cpp")
 set_target_properties(workbook_hints PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/grading")
-target_link_libraries(workbook_hints PRIVATE workbook_support)
+target_link_libraries(workbook_hints PRIVATE workbook_support CLI11::CLI11)
 workbook_warnings(workbook_hints)
 
 add_executable(test_hints "${CMAKE_CURRENT_LIST_DIR}/hints_test.cpp" "${CMAKE_CURRENT_LIST_DIR}/hints.cpp")

@@ -15,6 +15,7 @@
 // check reads the report (and, with --grades, the results, class.csv and the LMS files) and
 // says what does not hold; it also prints every honest and planted score, listed or not.
 // schema checks one results.json against Gradescope's format.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -288,31 +289,27 @@ struct Args {
     int size = 30;  // make: the class of 30, or 10 of it; check: at least this many submissions
 };
 
+// The options after the command (argv[1]), the same for every command; a wrong one exits with
+// status 2.
 Args parse(int argc, char** argv) {
     Args a;
-    for (int i = 2; i < argc; ++i) {
-        const std::string o = argv[i];
-        const std::string v = i + 1 < argc ? argv[i + 1] : "";
-        if (o == "--setup")
-            a.setup = v, ++i;
-        else if (o == "--out")
-            a.out = v, ++i;
-        else if (o == "--expect")
-            a.expect = v, ++i;
-        else if (o == "--class")
-            a.class_dir = v, ++i;
-        else if (o == "--grades")
-            a.grades = v, ++i;
-        else if (o == "--score")
-            a.score = std::stod(v), ++i;
-        else if (o == "--max-score")
-            a.max_score = std::stod(v), ++i;
-        else if (o == "--size")
-            a.size = std::stoi(v), ++i;
-        else if (!starts_with(o, "--"))
-            a.file = o;
-        else
-            std::fprintf(stderr, "grading_class: unknown option %s\n", o.c_str()), std::exit(2);
+    CLI::App app{"grading_class"};
+    app.set_help_flag();
+    for (const auto& [name, value] : {std::pair{"--setup", &a.setup},
+                                      {"--out", &a.out},
+                                      {"--expect", &a.expect},
+                                      {"--class", &a.class_dir},
+                                      {"--grades", &a.grades}})
+        app.add_option(name, *value);
+    app.add_option("--score", a.score);
+    app.add_option("--max-score", a.max_score);
+    app.add_option("--size", a.size);
+    app.add_option("file", a.file);  // schema: the results.json to check
+    try {
+        app.parse(argc - 1, argv + 1);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "grading_class: %s\n", e.what());
+        std::exit(2);
     }
     return a;
 }
@@ -637,7 +634,7 @@ int check(const Args& a) {
 
 int main(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
-    const Args a = parse(argc, argv);
+    const Args a = argc > 1 ? parse(argc, argv) : Args{};
     if (command == "make") return make(a);
     if (command == "check") return check(a);
     if (command == "schema") return schema(a);

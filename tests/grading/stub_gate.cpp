@@ -9,6 +9,7 @@
 // in one binary only, or a test name that doctest's filters would misread.
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -45,19 +46,28 @@ std::map<std::string, bool> run(const std::string& binary, const std::string& re
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 4 || (argc - 1) % 3 != 0) {
+    std::vector<std::string> args;  // topic, solutions grader, stubs grader, ...
+    CLI::App app{"stub_gate"};
+    app.set_help_flag();
+    app.add_option("graders", args)->required();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError&) {
+        args.clear();
+    }
+    if (args.empty() || args.size() % 3 != 0) {
         std::cerr << "usage: stub_gate <topic> <solutions grader> <stubs grader> [...]\n";
         return 2;
     }
     int tests = 0;
     std::vector<std::string> problems;
-    for (int i = 1; i < argc; i += 3) {
-        const std::string topic = argv[i];
+    for (std::size_t i = 0; i < args.size(); i += 3) {
+        const std::string topic = args[i];
         std::string p1, p2;
         // Per-process file names: two gates running at once never share a report.
         const std::string tag = "stub_gate_" + topic + "_" + std::to_string(getpid());
-        const auto ref = run(argv[i + 1], tag + "_solutions.jsonl", p1);
-        const auto stub = run(argv[i + 2], tag + "_stubs.jsonl", p2);
+        const auto ref = run(args[i + 1], tag + "_solutions.jsonl", p1);
+        const auto stub = run(args[i + 2], tag + "_stubs.jsonl", p2);
         std::remove((tag + "_solutions.jsonl").c_str());
         std::remove((tag + "_stubs.jsonl").c_str());
         if (!p1.empty()) problems.push_back(topic + ": solutions grader: " + p1);

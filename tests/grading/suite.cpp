@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -159,30 +160,32 @@ struct Args {
 
 // Returns 0, or the exit status of a wrong command line.
 int parse(int argc, char** argv, Args& a) {
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string o = argv[i], v = argv[i + 1];
-        if (o == "--setup")
-            a.setup_dir = v;
-        else if (o == "--harness")
-            a.harness = v;
-        else if (o == "--cases")
-            a.cases_dir = v;
-        else if (o == "--work")
-            a.work = v;
-        else if (o == "--count")
-            a.count = std::stoi(v);
-        else if (o == "--jobs")
-            a.jobs = std::stoi(v);
-        else if (o == "--timeout")
-            a.timeout = v;
-        else
-            return std::fprintf(stderr, "grading_suite: unknown option %s\n", o.c_str()), 2;
+    CLI::App app{"grading_suite"};
+    app.set_help_flag();
+    for (const auto& [name, value] : {std::pair{"--setup", &a.setup_dir},
+                                      {"--harness", &a.harness},
+                                      {"--cases", &a.cases_dir},
+                                      {"--work", &a.work}})
+        app.add_option(name, *value)->required();
+    const auto at_least = [](double lo) {
+        return [lo](const std::string& v) {
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            return end != v.c_str() && !*end && x >= lo ? std::string() : "needs a number >= " + format_number(lo);
+        };
+    };
+    app.add_option("--count", a.count)->check(at_least(0));
+    app.add_option("--jobs", a.jobs)->check(at_least(1));
+    app.add_option("--timeout", a.timeout)->check(at_least(0.001));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr,
+                     "grading_suite: %s\nusage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> "
+                     "[--count n] [--jobs n] [--timeout s]\n",
+                     e.what());
+        return 2;
     }
-    if (a.setup_dir.empty() || a.harness.empty() || a.cases_dir.empty() || a.work.empty())
-        return std::fprintf(
-                   stderr,
-                   "usage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> [--count n]\n"),
-               2;
     return 0;
 }
 

@@ -22,12 +22,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <functional>
 #include <map>
@@ -75,16 +77,6 @@ int fail(const std::string& message) {
     return 2;
 }
 
-double number(const std::string& option, const char* value) {
-    char* end = nullptr;
-    const double x = value ? std::strtod(value, &end) : 0;
-    if (!value || *end || !(x > 0)) {
-        std::fprintf(stderr, "workbook_grade: %s needs a positive number\n", option.c_str());
-        std::exit(2);
-    }
-    return x;
-}
-
 struct Args {
     std::string setup, topics, points, out, folder;
     std::string assignment = "Grioli workbook";  // the column of canvas.csv and moodle.csv
@@ -95,87 +87,89 @@ struct Args {
     Options options;
 };
 
-// The limits and the mutation gate's options (Options, grading.hpp); false for any other option.
-bool limit_option(const std::string& o, const std::function<std::string()>& take, Options& options) {
-    if (o == "--timeout")
-        options.test_limits.wall_seconds = number(o, take().c_str());
-    else if (o == "--memory")
-        options.test_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-    else if (o == "--output-limit")
-        options.test_limits.output_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-    else if (o == "--threads")
-        options.test_limits.threads = static_cast<int>(number(o, take().c_str()));
-    else if (o == "--build-timeout")
-        options.build_limits.wall_seconds = number(o, take().c_str());
-    else if (o == "--build-memory")
-        options.build_limits.memory_mb = static_cast<long>(number(o, take().c_str()));
-    else if (o == "--max-file-size")
-        options.max_file_bytes = static_cast<long>(number(o, take().c_str()) * 1024);
-    else if (o == "--test-env") {
-        const std::string e = take();
-        if (e.find('=') == std::string::npos || e.front() == '=')
-            std::fprintf(stderr, "workbook_grade: --test-env needs NAME=VALUE, not '%s'\n", e.c_str()), std::exit(2);
-        options.test_environment.push_back(e);
-    } else if (o == "--object-cache")
-        options.object_cache = take();
-    else
-        return false;
-    return true;
+// ---- the command line (CLI11) ----------------------------------------------------------------
+// Every command (grade, check, similarity, manifest) takes the same options; the usage above is
+// the help. An option given twice takes its last value (cmake/workbook passes -j before the
+// instructor's own options), except --only and --test-env, which add one value each time.
+
+std::string positive(const std::string& value) {
+    char* end = nullptr;
+    const double x = std::strtod(value.c_str(), &end);
+    return end != value.c_str() && !*end && x > 0 ? "" : "needs a positive number, not '" + value + "'";
 }
 
-Args parse(int argc, char** argv) {  // argv: --seed's value is wiped once read
-    Args a;
+// An option whose positive value is stored through `set` (a limit, in the unit Options keeps).
+void limit(CLI::App& app, const std::string& name, std::function<void(double)> set) {
+    app.add_option_function<double>(name, [set](const double& x) { set(x); })->check(positive);
+}
+
+void limit_options(CLI::App& app, Options& o) {
+    limit(app, "--timeout", [&o](double x) { o.test_limits.wall_seconds = x; });
+    limit(app, "--memory", [&o](double x) { o.test_limits.memory_mb = static_cast<long>(x); });
+    limit(app, "--output-limit", [&o](double x) { o.test_limits.output_bytes = static_cast<long>(x * 1024); });
+    limit(app, "--threads", [&o](double x) { o.test_limits.threads = static_cast<int>(x); });
+    limit(app, "--build-timeout", [&o](double x) { o.build_limits.wall_seconds = x; });
+    limit(app, "--build-memory", [&o](double x) { o.build_limits.memory_mb = static_cast<long>(x); });
+    limit(app, "--max-file-size", [&o](double x) { o.max_file_bytes = static_cast<long>(x * 1024); });
+    app.add_option("--test-env", o.test_environment)
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->check([](const std::string& e) {
+            return e.find('=') == std::string::npos || e.front() == '=' ? "needs NAME=VALUE, not '" + e + "'" : "";
+        });
+    app.add_option("--object-cache", o.object_cache);
+}
+
+void command_options(CLI::App& app, Args& a) {
+    app.set_help_flag();
+    app.add_flag_callback("-h,--help", [] { std::printf("%s", usage), std::exit(0); });
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    for (const auto& [name, value] : {std::pair{"--setup", &a.setup},
+                                      {"--topics", &a.topics},
+                                      {"--points", &a.points},
+                                      {"--out", &a.out},
+                                      {"--folder", &a.folder},
+                                      {"--assignment", &a.assignment}})
+        app.add_option(name, *value);
+    limit(app, "-j,--jobs", [&a](double x) { a.jobs = static_cast<int>(x); });
+    app.add_option("--only", a.only)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_flag("--force", a.force);
+    app.add_flag("--keep-work", a.options.keep_work);
+    app.add_flag("--unsafe", a.unsafe);
+    app.add_option("--seed", a.options.seed)->check([](const std::string& v) {
+        return v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 19
+                   ? "needs a whole number (at most 19 digits)"
+                   : "";
+    });
+    limit_options(app, a.options);
+    app.add_option("arguments", a.positional)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+// --seed's value, out of the command line that /proc shows to every user of the machine.
+void wipe_seed(int argc, char** argv) {
     for (int i = 2; i < argc; ++i) {
-        const std::string o = argv[i];
-        const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
-        auto take = [&]() -> std::string {
-            if (!v) {
-                std::fprintf(stderr, "workbook_grade: %s needs a value\n%s", o.c_str(), usage);
-                std::exit(2);
-            }
-            ++i;
-            return v;
-        };
-        if (o == "--setup")
-            a.setup = take();
-        else if (o == "--topics")
-            a.topics = take();
-        else if (o == "--points")
-            a.points = take();
-        else if (o == "--out")
-            a.out = take();
-        else if (o == "--folder")
-            a.folder = take();
-        else if (o == "-j" || o == "--jobs")
-            a.jobs = static_cast<int>(number(o, take().c_str()));
-        else if (starts_with(o, "-j") && o.size() > 2)
-            a.jobs = static_cast<int>(number("-j", o.c_str() + 2));
-        else if (o == "--only")
-            a.only.push_back(take());
-        else if (o == "--assignment")
-            a.assignment = take();
-        else if (o == "--force")
-            a.force = true;
-        else if (o == "--keep-work")
-            a.options.keep_work = true;
-        else if (o == "--unsafe")
-            a.unsafe = true;
-        else if (o == "--seed") {
-            a.options.seed = take();
-            if (a.options.seed.empty() || a.options.seed.find_first_not_of("0123456789") != std::string::npos ||
-                a.options.seed.size() > 19)
-                std::fprintf(stderr, "workbook_grade: --seed needs a whole number (at most 19 digits)\n"), std::exit(2);
-            // Out of the command line that /proc shows to every user of the machine.
-            for (char* c = argv[i]; *c; ++c) *c = 'x';
-        } else if (limit_option(o, take, a.options))
-            continue;
-        else if (o == "-h" || o == "--help")
-            std::printf("%s", usage), std::exit(0);
-        else if (starts_with(o, "-") && o.size() > 1)
-            std::fprintf(stderr, "workbook_grade: unknown option %s\n%s", o.c_str(), usage), std::exit(2);
-        else
-            a.positional.push_back(o);
+        char* value = nullptr;
+        if (std::strcmp(argv[i], "--seed") == 0 && i + 1 < argc)
+            value = argv[i + 1];
+        else if (std::strncmp(argv[i], "--seed=", 7) == 0)
+            value = argv[i] + 7;
+        for (char* c = value; c && *c; ++c) *c = 'x';
     }
+}
+
+// The options after the command (argv[1]); a wrong one exits with status 2 and the usage.
+Args parse(int argc, char** argv) {
+    Args a;
+    CLI::App app{"workbook_grade"};
+    command_options(app, a);
+    try {
+        app.parse(argc - 1, argv + 1);
+    } catch (const CLI::ParseError& e) {
+        wipe_seed(argc, argv);
+        std::fprintf(stderr, "workbook_grade: %s\n%s", e.what(), usage);
+        std::exit(2);
+    }
+    wipe_seed(argc, argv);
     return a;
 }
 
@@ -635,30 +629,32 @@ int check(const Args& a) {
     return all ? 0 : 1;
 }
 
+// api --topic <t> --nm <nm> --library <lib.a> --out <dir> --objects <o>... (build time)
+int api(int argc, char** argv) {
+    std::string topic, nm, library, out;
+    std::vector<std::string> objects;
+    CLI::App app{"workbook_grade api"};
+    for (const auto& [name, value] :
+         {std::pair{"--topic", &topic}, {"--nm", &nm}, {"--library", &library}, {"--out", &out}})
+        app.add_option(name, *value);
+    app.add_option("--objects", objects);
+    try {
+        app.parse(argc - 1, argv + 1);
+    } catch (const CLI::ParseError& e) {
+        return fail(std::string("api: ") + e.what());
+    }
+    if (topic.empty() || nm.empty() || library.empty() || out.empty() || objects.empty())
+        return fail("api needs --topic, --nm, --library, --out and --objects");
+    const std::string problem = make_api(topic, nm, library, objects, out);
+    return problem.empty() ? 0 : fail(problem);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) return fail(std::string("no command\n") + usage);
     const std::string command = argv[1];
-    if (command == "api") {
-        // api --topic <t> --nm <nm> --library <lib.a> --out <dir> --objects <o>... (build time)
-        std::string topic, nm, library, out;
-        std::vector<std::string> objects;
-        for (int i = 2; i < argc; ++i) {
-            const std::string o = argv[i];
-            if (o == "--objects") {
-                while (i + 1 < argc && !starts_with(argv[i + 1], "--")) objects.push_back(argv[++i]);
-            } else if (i + 1 < argc && (o == "--topic" || o == "--nm" || o == "--library" || o == "--out")) {
-                (o == "--topic" ? topic : o == "--nm" ? nm : o == "--library" ? library : out) = argv[++i];
-            } else {
-                return fail("api: unexpected argument " + o);
-            }
-        }
-        if (topic.empty() || nm.empty() || library.empty() || out.empty() || objects.empty())
-            return fail("api needs --topic, --nm, --library, --out and --objects");
-        const std::string problem = make_api(topic, nm, library, objects, out);
-        return problem.empty() ? 0 : fail(problem);
-    }
+    if (command == "api") return api(argc, argv);
     const Args a = parse(argc, argv);
     if (command == "manifest") {
         if (a.topics.empty() || a.points.empty() || a.out.empty())

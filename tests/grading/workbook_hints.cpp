@@ -6,6 +6,7 @@
 //                                                        every ladder follows the rules (hints.hpp),
 //                                                        and every graded exercise has one
 //   workbook_hints text <hints.md>                       every level as the terminal shows it
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -75,21 +76,43 @@ int lint(const hints::Hints& h, const std::string& file, const std::string& mani
     return problems ? 1 : 0;
 }
 
+// The command line (CLI11): one subcommand each, its arguments positional; anything else gets
+// the usage and status 2.
+struct Command {
+    std::string file, exercise, level, manifest;
+};
+
+CLI::App* subcommand(CLI::App& app, const std::string& name, Command& c) {
+    CLI::App* sub = app.add_subcommand(name);
+    sub->add_option("hints", c.file)->required();
+    return sub;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 3) return usage();
-    const std::string command = argv[1], file = argv[2];
-    const hints::Hints h = hints::read(file);
+    CLI::App app{"workbook_hints"};
+    app.set_help_flag();
+    app.require_subcommand(1);
+    Command c;
+    CLI::App* show_command = subcommand(app, "show", c);
+    show_command->add_option("exercise", c.exercise)->required();
+    show_command->add_option("level", c.level)->required();
+    CLI::App* lint_command = subcommand(app, "lint", c);
+    lint_command->add_option("--manifest", c.manifest);
+    CLI::App* text = subcommand(app, "text", c);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError&) {
+        return usage();
+    }
+    const hints::Hints h = hints::read(c.file);
     if (!h.error.empty()) return std::fprintf(stderr, "workbook_hints: %s\n", h.error.c_str()), 2;
-    if (command == "show" && argc == 5) return show(h, argv[3], argv[4]);
-    if (command == "lint" && (argc == 3 || (argc == 5 && std::string(argv[3]) == "--manifest")))
-        return lint(h, file, argc == 5 ? argv[4] : "");
-    if (command == "text" && argc == 3) {
+    if (show_command->parsed()) return show(h, c.exercise, c.level);
+    if (lint_command->parsed()) return lint(h, c.file, c.manifest);
+    if (text->parsed())
         for (const auto& l : h.ladders)
             for (std::size_t k = 1; k <= l.levels.size(); ++k)
                 std::printf("%s", hints::for_terminal(l, static_cast<int>(k)).c_str());
-        return 0;
-    }
-    return usage();
+    return 0;
 }

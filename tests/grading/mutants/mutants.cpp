@@ -19,6 +19,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -771,51 +772,39 @@ int run(const Options& o) {
 
 Options parse(int argc, char** argv) {
     Options o;
-    if (argc < 2)
-        die("usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
-            "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] [--one-by-one]");
+    const std::string usage =
+        "usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
+        "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] [--one-by-one]";
+    if (argc < 2) die(usage);
     o.command = argv[1];
     if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) die(a + " needs a value");
-            return argv[++i];
-        };
-        auto number = [&](double lo) {
-            const std::string v = value();
+    CLI::App app{"workbook_mutants"};
+    app.set_help_flag();
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    for (const auto& [name, value] :
+         {std::pair{"--setup", &o.setup}, {"--solutions", &o.solutions}, {"--out", &o.out}, {"--allow", &o.allow}})
+        app.add_option(name, *value);
+    app.add_option("--topic", o.topics)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--mutant", o.ids)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    const auto at_least = [](double lo) {
+        return [lo](const std::string& v) {
             char* end = nullptr;
             const double x = std::strtod(v.c_str(), &end);
-            if (*end || !(x >= lo))
-                die(a + " needs a number >= " + std::to_string(static_cast<int>(lo)) + ", not '" + v + "'");
-            return x;
+            return end != v.c_str() && !*end && x >= lo
+                       ? std::string()
+                       : "needs a number >= " + std::to_string(int(lo)) + ", not '" + v + "'";
         };
-        if (a == "--setup")
-            o.setup = value();
-        else if (a == "--solutions")
-            o.solutions = value();
-        else if (a == "--out")
-            o.out = value();
-        else if (a == "--allow")
-            o.allow = value();
-        else if (a == "--topic")
-            o.topics.push_back(value());
-        else if (a == "--mutant")
-            o.ids.push_back(value());
-        else if (a == "--sample")
-            o.sample = static_cast<int>(number(1));
-        else if (a == "--seed")
-            o.seed = static_cast<unsigned>(number(0));
-        else if (a == "-j")
-            o.jobs = static_cast<int>(number(1));
-        else if (a == "--timeout")
-            o.timeout = number(1);
-        else if (a == "--build-timeout")
-            o.build_timeout = number(1);
-        else if (a == "--one-by-one")
-            o.one_by_one = true;
-        else
-            die("unknown option '" + a + "'");
+    };
+    app.add_option("--sample", o.sample)->check(at_least(1));
+    app.add_option("--seed", o.seed)->check(at_least(0));
+    app.add_option("-j", o.jobs)->check(at_least(1));
+    app.add_option("--timeout", o.timeout)->check(at_least(1));
+    app.add_option("--build-timeout", o.build_timeout)->check(at_least(1));
+    app.add_flag("--one-by-one", o.one_by_one);
+    try {
+        app.parse(argc - 1, argv + 1);
+    } catch (const CLI::ParseError& e) {
+        die(std::string(e.what()) + "\n" + usage);
     }
     if (o.setup.empty() || o.solutions.empty()) die("--setup and --solutions are required");
     if (o.command == "run" && o.out.empty()) die("run needs --out <folder>");
