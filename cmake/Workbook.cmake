@@ -524,9 +524,9 @@ function(workbook_book)
   endif()
   set(tools "${root}/cmake/tools")
   add_executable(snippets "${tools}/snippets.cpp" "${tools}/book/snippet_values.cpp" "${tools}/book/numbers.cpp"
-                          "${tools}/book/names.cpp")
+                          "${tools}/book/names.cpp" "${tools}/book/markdown.cpp" "${tools}/book/run.cpp")
   # One program, a translation unit per job: render, check the structure, check the figures.
-  add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/run.cpp"
+  add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/run.cpp" "${tools}/book/markdown.cpp"
                            "${tools}/book/render.cpp" "${tools}/book/structure.cpp" "${tools}/book/figures.cpp")
   get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
   foreach(t snippets book_tool)

@@ -1,5 +1,6 @@
 // snippets --check, --check-values, --update, --diff: the code snippets quoted in the prose and
-// the value markers (see prose.hpp for both).
+// the value markers (see prose.hpp for both), found in each page's document tree as pandoc parses
+// it (markdown.hpp): what is in code is code, not a marker.
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "../prose.hpp"
+#include "markdown.hpp"
 #include "snippets.hpp"
 
 namespace snippets {
@@ -57,29 +59,32 @@ private:
         int values = 0, same = 0, differ = 0, missing = 0;
     };
 
-    // One prose file: its value markers and its quotations, rewritten in place by --update.
+    // One prose file, read as pandoc parses it (markdown.hpp): its value markers and its
+    // quotations, rewritten in place by --update.
     void file(const fs::path& p) {
-        const auto lines = prose::read_lines(p);
-        std::vector<std::string> out;
-        bool changed = false, in_fence = false;
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            const std::string where = rel(p, root_) + ":" + std::to_string(i + 1);
-            if (prose::is_fence(lines[i])) in_fence = !in_fence;
-            if (in_fence || prose::is_fence(lines[i])) {
-                out.push_back(lines[i]);
-                continue;
-            }
-            std::string line = lines[i];
+        const md::Page page = md::read_page(p);
+        std::vector<std::string> lines = page.lines;
+        const std::string name = rel(p, root_);
+        bool changed = false;
+        for (auto& [at, opens] : md::value_marker_lines(page)) {
+            if (at < 1 || static_cast<std::size_t>(at) > lines.size()) continue;
+            std::string& line = lines[static_cast<std::size_t>(at) - 1];
+            // The marker's grammar (prose.hpp) reads its options and text off the line; the tree
+            // said which markers of the line are Markdown's (not in code).
             auto markers = prose::find_value_markers(line);
-            for (auto v = markers.rbegin(); v != markers.rend(); ++v) changed |= value(*v, rel(p, root_), where, line);
-            out.push_back(line);
-            std::smatch m;
-            if (std::regex_match(lines[i], m, prose::snippet_use_marker()))
-                i = quote(m[1], lines, i, where, out, changed);
+            for (auto v = markers.rbegin(); v != markers.rend(); ++v) {
+                const auto it = std::find(opens.begin(), opens.end(), line.substr(v->begin, v->text_begin - v->begin));
+                if (it == opens.end()) continue;
+                opens.erase(it);
+                changed |= value(*v, name, name + ":" + std::to_string(at), line);
+            }
         }
+        auto quoted = md::quotations(page);  // from the bottom up: an update changes the lines below
+        std::sort(quoted.begin(), quoted.end(), [](const auto& a, const auto& b) { return a.line > b.line; });
+        for (const auto& q : quoted) changed |= quote(q, name, lines);
         if (mode_ == Mode::update && changed) {
             std::string text;
-            for (const auto& l : out) text += l + "\n";
+            for (const auto& l : lines) text += l + "\n";
             prose::write_text(p, text);
             std::cout << "updated " << rel(p, root_) << "\n";
         }
@@ -166,40 +171,30 @@ private:
         return (smoke_reports_[scene] = std::move(j)).get();
     }
 
-    // A quotation of the code snippet `name` (whole lines, from line i to its end marker): checked
-    // against the source, or rewritten by --update. Returns the index of the end marker's line.
-    std::size_t quote(const std::string& name, const std::vector<std::string>& lines, std::size_t i,
-                      const std::string& where, std::vector<std::string>& out, bool& changed) {
-        std::size_t j = i + 1;
-        while (j < lines.size() && !std::regex_match(lines[j], prose::snippet_use_end())) ++j;
-        if (j == lines.size()) {
-            problem(where + ": '<!-- snippet: " + name + " -->' has no '<!-- end snippet -->'");
-            return i;
-        }
-        std::string current;
-        for (std::size_t k = i + 1; k < j; ++k) current += lines[k] + "\n";
-        const auto s = snippets_.find(name);
-        if (s == snippets_.end()) {
-            problem(where + ": no source defines snippet '" + name + "' (code removed or renamed?)");
-            for (std::size_t k = i + 1; k <= j; ++k) out.push_back(lines[k]);
-            return j;
-        }
+    // A quotation of a code snippet: checked against the source, or rewritten by --update (the
+    // lines between its markers). Returns whether `lines` changed.
+    bool quote(const md::Quotation& q, const std::string& file, std::vector<std::string>& lines) {
+        const std::string where = file + ":" + std::to_string(q.line);
+        if (!q.end_line) return problem(where + ": '<!-- snippet: " + q.name + " -->' has no '<!-- end snippet -->'");
+        const auto s = snippets_.find(q.name);
+        if (s == snippets_.end())
+            return problem(where + ": no source defines snippet '" + q.name + "' (code removed or renamed?)");
         s->second.used = true;
         ++quoted_;
-        const std::string wanted = "```cpp\n" + s->second.text + "```\n";
-        const bool update = mode_ == Mode::update;
-        if (current != wanted) {
-            ++stale_;
-            if (update)
-                changed = true;
-            else if (mode_ == Mode::check)
-                problem(where + ": snippet '" + name + "' differs from " + s->second.file + ":" +
-                        std::to_string(s->second.line) + " (run: cmake --build <build> --target update-snippets)");
-        }
-        std::istringstream w(update ? wanted : current);
-        for (std::string l; std::getline(w, l);) out.push_back(l);
-        out.push_back(lines[j]);
-        return j;
+        const std::string& text = s->second.text;
+        if (q.one_cpp_block && (q.code.empty() ? text.empty() : q.code + "\n" == text)) return false;
+        ++stale_;
+        if (mode_ == Mode::check)
+            problem(where + ": snippet '" + q.name + "' differs from " + s->second.file + ":" +
+                    std::to_string(s->second.line) + " (run: cmake --build <build> --target update-snippets)");
+        if (mode_ != Mode::update) return false;
+        std::vector<std::string> wanted{"```cpp"};
+        std::istringstream w(text);
+        for (std::string l; std::getline(w, l);) wanted.push_back(l);
+        wanted.push_back("```");
+        const auto first = lines.begin() + q.line;  // the line after the marker
+        lines.insert(lines.erase(first, lines.begin() + (q.end_line - 1)), wanted.begin(), wanted.end());
+        return true;
     }
 
     bool problem(const std::string& what) {
