@@ -156,6 +156,13 @@ a tag <!--input:2-->that covers 2.5e-3 and then nothing.
 
 As section 1.2 showed, and [section 1.2](#13-the-end) too.
 
+* A list item, tagged <!--const-->2.2e-16,
+* and the next item, not: 8.8888.
+
+| Case | Error |
+|---|---|
+| one | 3.3333 |
+
 ![A figure that was never drawn.](../../figures/01_mini/none.svg)
 
 See [the next chapter](../02_missing/README.md) and [section 9](#9-nowhere).
@@ -205,6 +212,7 @@ check("snippets --check-numbers"
          "1.234 looks measured" "<!--once--> \\(measured once, by hand\\) belongs in the manuals"
          "the tag <!--input--> has 1 number\\(s\\) left" "'section 1.2' is not a link"
          "names section 1.2 but does not lead to its heading"
+         "01_mini/README.md:[0-9]+: 8.8888 looks measured" "01_mini/README.md:[0-9]+: 3.3333 looks measured"
   COMMAND "${SNIPPETS}" --check-numbers "${tree}")
 check("snippets --check-values"
   EXPECT "the hand value 0.4999 is 0.0001 from the run's 0.5 "

@@ -1,6 +1,9 @@
 // snippets --check-names: the prose names only code that exists (identifiers, paths, test names,
-// the scenes and options of its shell examples).
+// the scenes and options of its shell examples). The code spans and ```sh blocks are the nodes
+// of each page's tree as pandoc parses it (markdown.hpp); regular expressions read what is in
+// them (C++ names, paths, command lines), which is not Markdown.
 #include <algorithm>
+#include <functional>
 #include <iostream>
 #include <regex>
 #include <set>
@@ -8,6 +11,7 @@
 #include <vector>
 
 #include "../prose.hpp"
+#include "markdown.hpp"
 #include "snippets.hpp"
 
 namespace snippets {
@@ -74,24 +78,33 @@ public:
     }
 
 private:
+    // One page, read as pandoc parses it (markdown.hpp): its code spans and its ```sh blocks.
     void file(const fs::path& p) {
-        const auto lines = prose::read_lines(p);
-        bool in_fence = false;
-        std::string fence_lang;
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            const std::string& line = lines[i];
-            const std::string where = rel(p, root_) + ":" + std::to_string(i + 1);
-            if (prose::is_fence(line)) {
-                in_fence = !in_fence;
-                fence_lang = in_fence ? line.substr(line.find_first_not_of(" `~")) : "";
-            } else if (in_fence) {
-                if (fence_lang == "sh" || fence_lang == "bash") command(line, where);
-            } else {
-                static const std::regex span(R"(`([^`]+)`)");
-                for (auto it = std::sregex_iterator(line.begin(), line.end(), span); it != std::sregex_iterator(); ++it)
-                    code_span((*it)[1], where, p.parent_path());
+        const md::Page page = md::read_page(p);
+        const std::string name = rel(p, root_);
+        const auto where = [&](int line) { return name + ":" + std::to_string(line); };
+        md::walk(page.blocks, [&](const md::Json& n) {
+            const std::string& t = md::type(n);
+            if (t == "Code") code_span(n["c"][1].get<std::string>(), where(md::line(n)), p.parent_path());
+            if (t == "CodeBlock" && !n["c"][0][1].empty() && (n["c"][0][1][0] == "sh" || n["c"][0][1][0] == "bash")) {
+                std::istringstream lines(n["c"][1].get<std::string>());
+                int at = md::line(n);  // the fence's line
+                for (std::string l; std::getline(lines, l);) command(l, where(++at));
             }
-        }
+            if (t == "RawBlock") raw_block(n, where, p.parent_path());
+            return true;
+        });
+    }
+
+    // A block of raw HTML (a line that starts with a comment or a tag): the tree has its source
+    // text only, where a `code span` is read as GitHub shows it there.
+    void raw_block(const md::Json& n, const std::function<std::string(int)>& where, const fs::path& dir) {
+        static const std::regex span(R"(`([^`]+)`)");
+        std::istringstream lines(n["c"][1].get<std::string>());
+        int at = md::line(n);
+        for (std::string l; std::getline(lines, l); ++at)
+            for (auto it = std::sregex_iterator(l.begin(), l.end(), span); it != std::sregex_iterator(); ++it)
+                code_span((*it)[1], where(at), dir);
     }
 
     // A shell line: a scene run with its options, or a grader run.

@@ -1,5 +1,10 @@
 // snippets --check-numbers: every number of the prose that looks measured says what it is, and
-// every section of the workbook named by number is a link to it (see prose.hpp).
+// every section of the workbook named by number is a link to it (see prose.hpp). Each page is
+// read as pandoc parses it (markdown.hpp): its prose is the text of the tree's paragraphs,
+// headings, lists and tables (math included; code, comments and link targets are not prose),
+// its tags and value markers are the tree's raw HTML. Regular expressions find the numbers and
+// the section numbers in that text (words, not Markdown); only a raw HTML block (a line that
+// starts with a value marker is one) is read from its source lines, which is all the tree has.
 #include <algorithm>
 #include <iostream>
 #include <regex>
@@ -8,6 +13,7 @@
 #include <vector>
 
 #include "../prose.hpp"
+#include "markdown.hpp"
 #include "snippets.hpp"
 
 namespace snippets {
@@ -40,24 +46,161 @@ private:
         int left = 0;
     };
 
+    // Prose text gathered from the tree between two things that are not prose (code, comments,
+    // markers): its characters, the line of each, and whether each is a link's text.
+    struct Text {
+        std::string text;
+        std::vector<int> line;
+        std::vector<bool> in_link;
+    };
+
     void file(const fs::path& p) {
         ++files_;
-        const std::string name = rel(p, root_);
-        const bool manual = name.rfind("chapters/", 0) != 0 && name.rfind("exercises/", 0) != 0;
-        bool in_fence = false, in_comment = false;
-        Pending pending;
-        const auto lines = prose::read_lines(p);
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            const std::string where = name + ":" + std::to_string(i + 1);
-            const std::string& line = lines[i];
-            if (prose::is_fence(line)) in_fence = !in_fence;
-            if (in_fence || prose::is_fence(line)) continue;
-            if (line.find_first_not_of(" \t") == std::string::npos) {
-                stale(pending);
-                continue;
-            }
+        page_ = md::read_page(p);
+        name_ = rel(p, root_);
+        manual_ = name_.rfind("chapters/", 0) != 0 && name_.rfind("exercises/", 0) != 0;
+        pending_ = {};
+        in_value_ = in_link_ = false;
+        blocks(page_.blocks);
+        flush();
+        stale(pending_);
+    }
+
+    std::string where(int line) const { return name_ + ":" + std::to_string(line); }
+
+    // A list of blocks; a tag covers numbers up to the next blank line (the end of its paragraph).
+    void blocks(const md::Json& list) {
+        for (const auto& b : list) {
+            flush();  // a block's text is its own; a tag's count runs on to the paragraph's end
+            const int at = md::line(b);
+            if (at > 1 && static_cast<std::size_t>(at) <= page_.lines.size() &&
+                page_.lines[static_cast<std::size_t>(at) - 2].find_first_not_of(" \t") == std::string::npos)
+                stale(pending_);
+            block(b);
+        }
+    }
+
+    void block(const md::Json& b) {
+        const std::string& t = md::type(b);
+        const md::Json empty = md::Json::array();
+        const md::Json& c = b.contains("c") ? b["c"] : empty;
+        if (t == "Para" || t == "Plain") inlines(c);
+        if (t == "Header") inlines(c[2]);
+        if (t == "LineBlock")
+            for (const auto& l : c) inlines(l);
+        if (t == "CodeBlock" || t == "RawBlock") flush();
+        if (t == "RawBlock") raw_block(b);
+        if (t == "BlockQuote") blocks(c);
+        if (t == "Div") blocks(c[1]);
+        if (t == "BulletList" || t == "OrderedList")
+            for (const auto& item : t == "BulletList" ? c : c[1]) blocks(item);
+        if (t == "Table")
+            md::walk(c, [&](const md::Json& n) {  // each cell's blocks, in order
+                if (md::is(n, "Plain") || md::is(n, "Para")) flush(), inlines(n["c"]);
+                return !(md::is(n, "Plain") || md::is(n, "Para"));
+            });
+    }
+
+    void inlines(const md::Json& list) {
+        for (const auto& n : list) inline_node(n);
+    }
+
+    void inline_node(const md::Json& n) {
+        const std::string& t = md::type(n);
+        if (in_value_) {  // a value marker's text is its run's, not prose
+            if (md::raw_html(n).rfind("<!-- end value -->", 0) == 0) in_value_ = false;
+            return;
+        }
+        if (t == "Str") add(n["c"].get<std::string>(), md::line(n));
+        if (t == "Space" || t == "SoftBreak" || t == "LineBreak") add(" ", md::line(n));
+        if (t == "Math") add("$" + n["c"][1].get<std::string>() + "$", md::line(n));
+        if (t == "Code") flush();
+        if (t == "RawInline") raw_inline(n);
+        if (t == "Link") link(n);
+        if (t == "Image" || t == "Span" || t == "Cite") inlines(n["c"][1]);
+        if (t == "Emph" || t == "Strong" || t == "Strikeout" || t == "Underline" || t == "SmallCaps" ||
+            t == "Superscript" || t == "Subscript")
+            inlines(n["c"]);
+        if (t == "Quoted") {
+            add("\"", md::line(n));
+            inlines(n["c"][1]);
+            add("\"", md::line(n));
+        }
+        if (t == "Note") blocks(n["c"]);
+    }
+
+    void add(const std::string& s, int line) {
+        text_.text += s;
+        text_.line.insert(text_.line.end(), s.size(), line);
+        text_.in_link.insert(text_.in_link.end(), s.size(), in_link_);
+    }
+
+    // An HTML comment inside a paragraph: a number tag, a value marker (whose text is skipped up
+    // to its end), or another comment; none of it is prose.
+    void raw_inline(const md::Json& n) {
+        flush();
+        const std::string html = md::raw_html(n);
+        if (html.rfind("<!-- value:", 0) == 0) {
+            ++markers_;
+            if (html.find(" tol=") != std::string::npos) ++hand_;
+            in_value_ = true;
+            return;
+        }
+        for (const auto& tag : prose::find_number_tags(html)) open_tag(tag, where(md::line(n)), manual_, pending_);
+    }
+
+    // A link: a section it names by number must be the heading it leads to; its text is prose.
+    void link(const md::Json& n) {
+        static const std::regex section(R"((?:[Ss]ections?|§)\s*([0-9]+)\.([0-9]+))");
+        const std::string text = md::text(n["c"][1]), target = n["c"][2][0].get<std::string>();
+        std::smatch m;
+        if (std::regex_search(text, m, section)) {
+            const std::string want = "#" + m[1].str() + m[2].str() + "-";
+            if (target.find(want) == std::string::npos)
+                problems_.push_back(where(md::line(n)) + ": the link '[" + text + "](" + target + ")' names " +
+                                    m.str() + " but does not lead to its heading (" + want + "...)");
+        }
+        in_link_ = true;
+        inlines(n["c"][1]);
+        in_link_ = false;
+    }
+
+    // The prose gathered so far: its numbers that look measured (each covered by a tag, or a
+    // problem), and its sections named by number outside a link.
+    void flush() {
+        const Text t = std::move(text_);
+        text_ = {};
+        if (t.text.empty()) return;
+        static const std::regex section(R"((?:[Ss]ections?|§)\s*[0-9]+\.[0-9]+)");
+        for (auto it = std::sregex_iterator(t.text.begin(), t.text.end(), section); it != std::sregex_iterator(); ++it)
+            if (!t.in_link[static_cast<std::size_t>(it->position(0))])
+                problems_.push_back(where(t.line[static_cast<std::size_t>(it->position(0))]) + ": '" + it->str() +
+                                    "' is not a link: write [" + it->str() +
+                                    "](page.md#its-heading), which the book's render checks");
+        for (const auto& number : prose::measured_numbers(t.text, std::vector<bool>(t.text.size(), false)))
+            covered(number, where(t.line[number.begin]));
+    }
+
+    void covered(const prose::ProseNumber& number, const std::string& at) {
+        if (pending_.left > 0)
+            --pending_.left, ++tagged_, ++kinds_[pending_.kind];
+        else
+            problems_.push_back(at + ": " + number.text +
+                                " looks measured: make it a value marker, or tag it "
+                                "(<!--exact-->, <!--input-->, <!--const-->, <!--P-->)");
+    }
+
+    // A block of raw HTML (CommonMark's rule: a line that starts with "<!--" or a tag, e.g. a
+    // value marker or <summary>). The tree has its source text only; read line by line as before
+    // the tree: comments, markers, `code` and link targets masked, the rest prose.
+    void raw_block(const md::Json& b) {
+        std::istringstream lines(b["c"][1].get<std::string>());
+        int at = md::line(b);
+        bool in_comment = false;
+        for (std::string line; std::getline(lines, line); ++at) {
+            if (line.find_first_not_of(" \t") == std::string::npos) continue;
             auto skip = masked(line, in_comment);
-            sections(line, skip, where);
+            sections(line, skip, where(at));
             struct Event {
                 std::size_t at;
                 const prose::NumberTag* tag;
@@ -68,19 +211,14 @@ private:
             for (const auto& t : tags) events.push_back({t.begin, &t, nullptr});
             const auto numbers = prose::measured_numbers(line, skip);
             for (const auto& n : numbers) events.push_back({n.begin, nullptr, &n});
-            std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.at < b.at; });
+            std::sort(events.begin(), events.end(), [](const Event& x, const Event& y) { return x.at < y.at; });
             for (const Event& e : events) {
                 if (e.tag)
-                    open_tag(*e.tag, where, manual, pending);
-                else if (pending.left > 0)
-                    --pending.left, ++tagged_, ++kinds_[pending.kind];
+                    open_tag(*e.tag, where(at), manual_, pending_);
                 else
-                    problems_.push_back(where + ": " + e.number->text +
-                                        " looks measured: make it a value marker, or tag it "
-                                        "(<!--exact-->, <!--input-->, <!--const-->, <!--P-->)");
+                    covered(*e.number, where(at));
             }
         }
-        stale(pending);
     }
 
     // Characters that are not prose: code spans, HTML comments (tags included; also one that
@@ -172,6 +310,11 @@ private:
     }
 
     fs::path root_;
+    md::Page page_;
+    std::string name_;
+    bool manual_ = false, in_value_ = false, in_link_ = false;
+    Pending pending_;
+    Text text_;
     std::vector<std::string> problems_;
     std::map<std::string, int> kinds_;
     int files_ = 0, markers_ = 0, hand_ = 0, tagged_ = 0;
