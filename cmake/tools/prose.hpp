@@ -104,13 +104,8 @@ inline std::string rel(const fs::path& p, const fs::path& root) { return fs::rel
 
 // ------------------------------------------------------------------------------ code
 
-// A line that opens or closes a fenced code block (``` or ~~~, up to 3 spaces indented).
-inline bool is_fence(const std::string& line) {
-    static const std::regex fence(R"(^ {0,3}(```|~~~).*$)");
-    return std::regex_match(line, fence);
-}
-
-// For each character of a line: is it inside a `code span`?
+// For each character of a line: is it inside a `code span`? For the lines the document tree has
+// only as text (raw HTML blocks, see book/markdown.hpp) and the markers' own grammar below.
 inline std::vector<bool> code_span_mask(const std::string& line) {
     std::vector<bool> mask(line.size(), false);
     std::size_t i = 0;
@@ -217,15 +212,6 @@ inline std::map<std::string, Snippet> collect_snippets(const fs::path& root, con
                                "' is never closed");
     }
     return snippets;
-}
-
-inline const std::regex& snippet_use_marker() {
-    static const std::regex r(R"(^<!-- snippet: ([A-Za-z0-9_]+) -->\s*$)");
-    return r;
-}
-inline const std::regex& snippet_use_end() {
-    static const std::regex r(R"(^<!-- end snippet -->\s*$)");
-    return r;
 }
 
 // ------------------------------------------------------------------------------ JSON

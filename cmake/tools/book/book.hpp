@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 std::string html_escape(const std::string& s);
 
 // The first "# Heading" of a markdown file, without markdown (its stem when it has none).
-std::string first_heading(const fs::path& md);
+std::string first_heading(const fs::path& file);
 
 // The chapters' folders, in the order of the table of contents as CMake read it from
 // chapters/README.md (cmake/contents.cmake writes <build>/contents.json).

@@ -1,5 +1,6 @@
 #include "../prose.hpp"
 #include "book.hpp"
+#include "markdown.hpp"
 
 namespace book {
 
@@ -26,17 +27,20 @@ std::string html_escape(const std::string& s) {
     return out;
 }
 
-std::string first_heading(const fs::path& md) {
-    bool in_fence = false;
-    for (const auto& l : prose::read_lines(md)) {
-        if (prose::is_fence(l)) in_fence = !in_fence;
-        if (in_fence || l.rfind("# ", 0) != 0) continue;
+std::string first_heading(const fs::path& file) {
+    const md::Page page = md::read_page(file);
+    for (const auto& b : page.blocks) {
+        const int at = md::line(b);
+        if (!md::is(b, "Header") || b["c"][0] != 1 || at < 1 || static_cast<std::size_t>(at) > page.lines.size())
+            continue;
+        // The heading as written on its line, without its markup (a title is plain text).
+        const std::string& l = page.lines[static_cast<std::size_t>(at) - 1];
         std::string t;
-        for (char c : l.substr(2))
+        for (char c : l.substr(l.find_first_not_of("# ")))
             if (c != '*' && c != '`' && c != '_') t += c;
         return t;
     }
-    return md.stem().string();
+    return file.stem().string();
 }
 
 std::vector<std::string> chapter_list(const fs::path& contents) {

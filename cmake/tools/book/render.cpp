@@ -26,6 +26,7 @@
 
 #include "../prose.hpp"
 #include "book.hpp"
+#include "markdown.hpp"
 #include "run.hpp"
 
 namespace book {
@@ -33,6 +34,62 @@ namespace book {
 namespace {
 
 using prose::rel;
+
+// A figure of the prose: a paragraph that is one image, alone on its line.
+struct Image {
+    std::string alt, src;
+};
+
+// What the render does to a page's lines, found in the page's tree (markdown.hpp): the lines with
+// an HTML comment outside code (value markers and number tags: replaced, dropped), the quotations
+// of snippets (their markers: a link to the source), the motion markers, the figures. Every other
+// line, code included, goes to pandoc as it is.
+struct PagePlan {
+    std::map<int, std::string> snippets;  // the line of a quotation's marker -> the snippet's name
+    std::set<int> skip;                   // the lines of the quotations' end markers
+    std::map<int, std::string> motions;   // the line of a motion marker -> the motion's JSON
+    std::map<int, Image> images;          // the line of a figure -> the figure
+    std::set<int> comments;               // the lines with an HTML comment outside code
+};
+
+// A paragraph that is one image: a figure when its line is the image alone, as GitHub shows it;
+// its alt text as written (the caption), its target as pandoc read it.
+void plan_image(const md::Json& para, const std::vector<std::string>& lines, PagePlan& plan) {
+    const int at = md::line(para);
+    if (at < 1 || static_cast<std::size_t>(at) > lines.size()) return;
+    std::string l = lines[static_cast<std::size_t>(at) - 1];
+    l.erase(l.find_last_not_of(" \t\r") + 1);
+    const std::string src = para["c"][0]["c"][2][0].get<std::string>(), tail = "](" + src + ")";
+    if (l.rfind("![", 0) != 0 || l.size() < tail.size() + 2 ||
+        l.compare(l.size() - tail.size(), tail.size(), tail) != 0)
+        return;
+    plan.images[at] = Image{l.substr(2, l.size() - tail.size() - 2), src};
+}
+
+PagePlan plan_page(const std::vector<std::string>& lines, const fs::path& scratch) {
+    std::string text;
+    for (const auto& l : lines) text += l + "\n";
+    prose::write_text(scratch, text);
+    const md::Page tree = md::read_page(scratch);
+    PagePlan plan;
+    for (const auto& q : md::quotations(tree)) {
+        plan.snippets[q.line] = q.name;
+        if (q.end_line) plan.skip.insert(q.end_line);
+    }
+    static const std::regex motion(R"(^<!-- motion: (\S+) -->\s*$)");  // the marker's own grammar
+    md::walk(tree.blocks, [&](const md::Json& n) {
+        const std::string html = md::raw_html(n);
+        std::smatch m;
+        if (html.find("<!--") != std::string::npos) {
+            const auto spans = std::count(html.begin(), html.end(), '\n') + (html.back() == '\n' ? 0 : 1);
+            for (int k = 0; k < std::max<int>(1, static_cast<int>(spans)); ++k) plan.comments.insert(md::line(n) + k);
+        }
+        if (md::is(n, "RawBlock") && std::regex_match(html, m, motion)) plan.motions[md::line(n)] = m[1];
+        if (md::is(n, "Para") && n["c"].size() == 1 && md::is(n["c"][0], "Image")) plan_image(n, lines, plan);
+        return true;
+    });
+    return plan;
+}
 
 struct Page {
     std::string file;   // in the book: "01_pure_rotations.html", "code/exercises/rotation.cpp.html"
@@ -63,13 +120,14 @@ private:
     std::string page_for(const fs::path& target);  // "" when not a page (yet)
     std::string map_link(const Page& page, const std::string& url, std::vector<std::string>& problems);
     std::string preprocess(const Page& page);
-    std::string figure_html(const Page& page, const std::smatch& image, int figure);
+    std::string figure_html(const Page& page, const Image& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
     std::string hand_value_html(const prose::ValueMarker& v, const prose::Json* report);
     std::string numbers_html(std::string line, const std::string& where);
     std::string motion_html(const Page& page, const std::string& path, const std::string& fallback, int motion);
-    std::string motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
-                             const std::string& path, int motion, const std::string& where);
+    std::string motion_block(const Page& page, const Image* fallback, const std::string& path, int motion,
+                             const std::string& where);
+    std::string snippet_source(const Page& page, const std::string& name, const std::string& where);
     std::string rewrite_links(const Page& page, const std::string& html);
     void render_markdown(const Page& page, const Page* prev, const Page* next);
     void render_code(const Page& page);
@@ -185,16 +243,16 @@ std::string Book::map_link(const Page& page, const std::string& url, std::vector
 // figures with numbered captions.
 // A figure: numbered in its chapter, with its caption; one this build should have drawn but did
 // not shows the committed one, and says so.
-std::string Book::figure_html(const Page& page, const std::smatch& m, int figure) {
+std::string Book::figure_html(const Page& page, const Image& m, int figure) {
     const std::string number =
         page.chapter ? std::to_string(page.chapter) + "." + std::to_string(figure) : std::to_string(figure);
-    const std::string key = rel((page.source.parent_path() / m[2].str()).lexically_normal(), root_);
+    const std::string key = rel((page.source.parent_path() / m.src).lexically_normal(), root_);
     std::string whose;
     if (key.rfind("figures/", 0) == 0 && own_run() && !fs::exists(figures_ / key.substr(8)))
         whose = " <em>(The committed figure: this build has not drawn it.)</em>";
-    return "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m[2]) + "\" alt=\"" + html_escape(m[1]) +
-           "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m[1]) + whose +
-           "</figcaption>\n</figure>\n";
+    return "<figure id=\"figure-" + number + "\">\n<img src=\"" + html_escape(m.src) + "\" alt=\"" +
+           html_escape(m.alt) + "\">\n<figcaption><strong>Figure " + number + ".</strong> " + html_escape(m.alt) +
+           whose + "</figcaption>\n</figure>\n";
 }
 
 // A motion for the viewer (cmake/book/motion_viewer.js): the JSON a scene wrote with --motion FILE,
@@ -233,16 +291,12 @@ std::string Book::motion_html(const Page& page, const std::string& path, const s
     return html + "</figcaption>\n</figure>\n";
 }
 
-// A motion marker at lines[i], and the image line after it (the GIF that GitHub shows), which it
-// takes as the viewer's still picture.
-std::string Book::motion_block(const Page& page, const std::vector<std::string>& lines, std::size_t& i,
-                               const std::string& path, int motion, const std::string& where) {
-    static const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
-    std::smatch m;
-    std::string fallback;
-    if (i + 1 < lines.size() && std::regex_match(lines[i + 1], m, image)) fallback = m[2], ++i;
+// A motion marker, and the image after it (the GIF that GitHub shows; `fallback`, may be null),
+// which it takes as the viewer's still picture.
+std::string Book::motion_block(const Page& page, const Image* fallback, const std::string& path, int motion,
+                               const std::string& where) {
     try {
-        return motion_html(page, path, fallback, motion);
+        return motion_html(page, path, fallback ? fallback->src : "", motion);
     } catch (const std::exception& e) {
         problems_.push_back(where + ": " + e.what());
         return "";
@@ -308,46 +362,45 @@ std::string Book::hand_value_html(const prose::ValueMarker& v, const prose::Json
            ": typed by hand; the run gives " + html_escape(prose::resolve(exact, *report)) + "\">" + v.text + "</span>";
 }
 
+// Where "From <file>" stands for a quoted snippet: a link to the line of its source.
+std::string Book::snippet_source(const Page& page, const std::string& name, const std::string& where) {
+    const auto s = snippets_.find(name);
+    if (s == snippets_.end()) {
+        problems_.push_back(where + ": no source defines snippet '" + name + "'");
+        return "";
+    }
+    const std::string link = fs::relative(root_ / s->second.file, page.source.parent_path()).generic_string();
+    return "<p class=\"snippet-source\">From <a href=\"" + link + "#src-" + std::to_string(s->second.line + 1) +
+           "\"><code>" + html_escape(s->second.file) + "</code></a></p>\n\n";
+}
+
 std::string Book::preprocess(const Page& page) {
     auto lines = prose::read_lines(page.source);
     page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
-    const std::regex image(R"(^!\[([^\]]*)\]\(([^)\s]+)\)\s*$)");
-    const std::regex motion_marker(R"(^<!-- motion: (\S+) -->\s*$)");
+    const PagePlan plan = plan_page(lines, out_ / ".work" / (page.file + ".source.md"));
     std::string md;
-    bool in_fence = false;
     int figure = 0, motion = 0;
     const std::string where0 = rel(page.source, root_);
     for (std::size_t i = 0; i < lines.size(); ++i) {
-        std::string line = lines[i];
-        const std::string where = where0 + ":" + std::to_string(i + 1);
-        if (prose::is_fence(line)) in_fence = !in_fence;
-        if (in_fence || prose::is_fence(line)) {
-            md += line + "\n";
+        const int at = static_cast<int>(i) + 1;
+        const std::string where = where0 + ":" + std::to_string(at);
+        if (plan.snippets.count(at)) {
+            md += snippet_source(page, plan.snippets.at(at), where);
+        } else if (plan.skip.count(at)) {
             continue;
+        } else if (plan.motions.count(at)) {
+            const auto next = plan.images.find(at + 1);
+            md += motion_block(page, next == plan.images.end() ? nullptr : &next->second, plan.motions.at(at), ++motion,
+                               where);
+            i += next == plan.images.end() ? 0 : 1;
+        } else if (plan.images.count(at)) {
+            md += figure_html(page, plan.images.at(at), ++figure);
+        } else if (plan.comments.count(at)) {
+            md += numbers_html(lines[i], where) + "\n";
+        } else {
+            md += lines[i] + "\n";
         }
-        std::smatch m;
-        if (std::regex_match(line, m, prose::snippet_use_marker())) {
-            const auto s = snippets_.find(m[1]);
-            if (s == snippets_.end()) {
-                problems_.push_back(where + ": no source defines snippet '" + m[1].str() + "'");
-                continue;
-            }
-            const std::string link = fs::relative(root_ / s->second.file, page.source.parent_path()).generic_string();
-            md += "<p class=\"snippet-source\">From <a href=\"" + link + "#src-" + std::to_string(s->second.line + 1) +
-                  "\"><code>" + html_escape(s->second.file) + "</code></a></p>\n\n";
-            continue;
-        }
-        if (std::regex_match(line, prose::snippet_use_end())) continue;
-        if (std::regex_match(line, m, motion_marker)) {
-            md += motion_block(page, lines, i, m[1], ++motion, where);
-            continue;
-        }
-        if (std::regex_match(line, m, image)) {
-            md += figure_html(page, m, ++figure);
-            continue;
-        }
-        md += numbers_html(line, where) + "\n";
     }
     return md;
 }
