@@ -427,33 +427,66 @@ std::string Book::numbers_html(std::string line, const std::string& where) {
     return line;
 }
 
+// The source lines of the block at `line` (1-based): up to the next blank line.
+std::string block_text(const md::Page& page, int line) {
+    std::string text;
+    for (auto i = static_cast<std::size_t>(std::max(line, 1)) - 1;
+         i < page.lines.size() && page.lines[i].find_first_not_of(" \t") != std::string::npos; ++i)
+        text += page.lines[i] + "\n";
+    return text;
+}
+
+// A link "[words](target)" of a Markdown text, written as its words; the tree named the target.
+void unlink(std::string& text, const std::string& target) {
+    const auto close = text.find("](" + target + ")");
+    if (close == std::string::npos) return;
+    std::size_t open = close;
+    for (int depth = 0; open-- > 0;) {
+        if (text[open] == ']') ++depth;
+        if (text[open] == '[' && depth-- == 0) break;
+    }
+    if (open == std::string::npos) return;
+    text.replace(open, close + target.size() + 3 - open, text.substr(open + 1, close - open - 1));
+}
+
+// The first paragraph after the title of the top README, its links (which lead elsewhere) as
+// their words.
+std::string lead_paragraph(const fs::path& readme) {
+    const md::Page page = md::read_page(readme);
+    bool titled = false;
+    for (const auto& b : page.blocks) {
+        if (!titled) {
+            titled = md::is(b, "Header") && b["c"][0] == 1;
+            continue;
+        }
+        if (!md::is(b, "Para")) return "";
+        std::string text = block_text(page, md::line(b));
+        md::walk(b, [&](const md::Json& n) {
+            if (md::is(n, "Link")) unlink(text, n["c"][2][0].get<std::string>());
+            return true;
+        });
+        return text;
+    }
+    return "";
+}
+
 // The contents page opens the book: its title, the first paragraph of the top README (what
-// the book is about), a pointer to how to use it, then chapters/README.md under "Contents".
+// the book is about), a pointer to how to use it, then chapters/README.md under "Contents" (its
+// title, the first level-1 heading in its tree, made a section of the opening page).
 std::vector<std::string> Book::index_lines(const std::vector<std::string>& contents) {
     std::vector<std::string> out{"# " + book_title_, ""};
-    const auto top = prose::read_lines(root_ / "README.md");
-    std::size_t i = 0;
-    while (i < top.size() && top[i].rfind("# ", 0) != 0) ++i;
-    ++i;
-    while (i < top.size() && top[i].empty()) ++i;
-    const std::regex link(R"(\[([^\]]*)\]\([^)]*\))");  // its links point elsewhere: keep their words
-    std::string lead;
-    for (; i < top.size() && !top[i].empty() && top[i].rfind("#", 0) != 0; ++i)
-        lead += std::regex_replace(top[i], link, "$1") + "\n";
+    const std::string lead = lead_paragraph(root_ / "README.md");
     if (!lead.empty()) out.push_back("<div class=\"lead\">\n\n" + lead + "\n</div>\n");
     out.push_back(
         "New here? [Using the workbook](../README.md) has the two commands that build, run and test it, "
         "and how students, self-learners and instructors work with it.");
     out.push_back("");
-    bool title_done = false;
-    for (const auto& l : contents) {
-        if (!title_done && l.rfind("# ", 0) == 0) {
-            out.push_back("#" + l);  // "# Contents" becomes a section of the opening page
-            title_done = true;
-        } else {
-            out.push_back(l);
-        }
-    }
+    int title = 0;
+    const md::Page page = md::read_page(root_ / "chapters" / "README.md");
+    for (const auto& b : page.blocks)
+        if (!title && md::is(b, "Header") && b["c"][0] == 1) title = md::line(b);
+    for (std::size_t i = 0; i < contents.size(); ++i)
+        out.push_back(static_cast<int>(i) + 1 == title ? "#" + contents[i] : contents[i]);
     return out;
 }
 
