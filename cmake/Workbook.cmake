@@ -39,7 +39,7 @@ macro(workbook_find_dependencies)
   endif()
   find_package(CLI11 2 QUIET)
   if(NOT CLI11_FOUND)
-    workbook_missing("CLI11 (the command lines of the grading run's programs)" libcli11-dev)
+    workbook_missing("CLI11 (the command lines of the book's tools and the grading run's programs)" libcli11-dev)
   endif()
   find_package(Boost 1.65 QUIET COMPONENTS iostreams filesystem)
   if(NOT Boost_FOUND)
@@ -517,20 +517,15 @@ function(workbook_book)
   set(root "${WORKBOOK_ROOT}")
   set(runs "${CMAKE_BINARY_DIR}/runs.txt")
 
-  # The tools' command lines: CLI11 (Debian: libcli11-dev, header only, with a CMake package).
-  find_package(CLI11 2 CONFIG QUIET)
-  if(NOT CLI11_FOUND)
-    workbook_missing("CLI11 (the command lines of the book's tools)" libcli11-dev)
-  endif()
   set(tools "${root}/cmake/tools")
   add_executable(snippets "${tools}/snippets.cpp" "${tools}/book/snippet_values.cpp" "${tools}/book/numbers.cpp"
-                          "${tools}/book/names.cpp" "${tools}/book/markdown.cpp" "${tools}/book/run.cpp")
+                          "${tools}/book/names.cpp" "${tools}/book/markdown.cpp")
   # One program, a translation unit per job: render, check the structure, check the figures.
-  add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/run.cpp" "${tools}/book/markdown.cpp"
+  add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/markdown.cpp"
                            "${tools}/book/render.cpp" "${tools}/book/structure.cpp" "${tools}/book/figures.cpp")
   get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
   foreach(t snippets book_tool)
-    target_link_libraries(${t} PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11)
+    target_link_libraries(${t} PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11 workbook_support)
     workbook_warnings(${t})
     target_compile_options(${t} PRIVATE -O1)  # tools: quick to build, fast enough to run
     set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")

@@ -1,10 +1,12 @@
-// Starting a program: the one place the book's tools start one (pandoc, fc-list). By its argument
-// vector, through posix_spawnp: never a shell. Kept to this one function so that it can later call
-// the workbook's support library (cmake/tools/support/) instead.
+// Starting a program: the one place the book's tools start one (pandoc, fc-list), through the
+// workbook's support library (cmake/tools/support/process.hpp): by its argument vector, never a
+// shell.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "support/process.hpp"
 
 namespace book {
 
@@ -14,6 +16,11 @@ struct Output {
 };
 
 // Runs argv[0] (found on the PATH) with argv, and waits for it.
-Output run(const std::vector<std::string>& argv);
+inline Output run(const std::vector<std::string>& argv) {
+    support::RunOptions options;
+    options.stderr_to_stdout = true;
+    const support::Result r = support::run(argv, options);
+    return {r.status, r.out + r.error};
+}
 
 }  // namespace book
