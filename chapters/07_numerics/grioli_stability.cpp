@@ -2,8 +2,9 @@
 // stability in the critical case of fourth-order resonance; this scene measures what numerics can.
 //
 // Two independent measurements. (1) Linear: the monodromy matrix M of the variational equations
-// dPhi/dt = D(t) Phi along the exact precession over one period (D = euler_poisson_jacobian,
-// Chapter 4), and its eigenvalues, the Floquet multipliers, over a grid of body shapes; a
+// dPhi/dt = D(t) Phi along the exact precession over one period (D the Jacobian of Euler's
+// equations on the gaps; kit/stability.hpp, shared with the scenes of Chapters 5 and 6), and its
+// eigenvalues, the Floquet multipliers, over a grid of body shapes; a
 // multiplier off the unit circle, |mu| > 1, means a deviation that grows like |mu|^(t/P); on it,
 // the precession is linearly (spectrally) stable, which does not decide its nonlinear stability.
 // (2) Nonlinear, over a finite time: start the full equations from the precession's initial
@@ -30,6 +31,7 @@
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
+#include "stability.hpp"
 
 using rigid::BodyState;
 using rigid::MatX;
@@ -51,44 +53,12 @@ rigid::Moments shape(double u, double v) {
 }
 // end snippet
 
-struct Floquet {
-    double growth;    // ln |mu| of the largest multiplier: growth per period
-    double rotation;  // arg(mu) / (2 pi) of the multiplier farthest from 1, in [0, 1/2]
-    std::vector<std::complex<double>> multipliers;
-};
+using kit::Floquet;
+using kit::floquet;
 
-// snippet: monodromy
-// The monodromy matrix over one period P = 2 pi / alpha: Phi(P) with Phi(0) = 1 and
-// dPhi/dt = D(y(t)) Phi, y(t) the exact precession (Theorem 1); Phi is packed column by column.
-MatX monodromy(const rigid::Moments& m, rigid::Sense sense, double tol) {
-    const rigid::GrioliPrecession g = rigid::grioli_precession(m, 1.0, sense);
-    const rigid::HeavyTop top = rigid::grioli_top(m, g);
-    const rigid::OdeRhs rhs = [&](double t, const VecX& phi) {
-        const BodyState y{rigid::grioli_angular_velocity(g, t), rigid::grioli_rotation(g, t)};
-        const MatX dPhi = rigid::euler_poisson_jacobian(top, y) * Eigen::Map<const MatX>(phi.data(), 12, 12);
-        return VecX(Eigen::Map<const VecX>(dPhi.data(), 144));
-    };
-    const MatX I = MatX::Identity(12, 12);
-    VecX last;
-    rigid::integrate_gsl(rhs, Eigen::Map<const VecX>(I.data(), 144), {0.0, 2 * pi / g.alpha},
-                         [&](double, const VecX& phi) { last = phi; },
-                         {.method = "rk8pd", .rel_tol = tol, .abs_tol = tol});
-    return Eigen::Map<const MatX>(last.data(), 12, 12);
-}
-// end snippet
-
-Floquet floquet(const MatX& M) {
-    Eigen::EigenSolver<MatX> es(M, false);
-    Floquet f{-1e300, 0, {}};
-    double far = -1;
-    for (int i = 0; i < 12; ++i) {
-        const std::complex<double> mu = es.eigenvalues()(i);
-        f.multipliers.push_back(mu);
-        f.growth = std::max(f.growth, std::log(std::abs(mu)));
-        if (std::abs(mu - 1.0) > far) far = std::abs(mu - 1.0), f.rotation = std::abs(std::arg(mu)) / (2 * pi);
-    }
-    return f;
-}
+// The monodromy matrix of the precession, from the kit (stability.hpp): the scenes of Chapters 5
+// and 6 report the stability of the precessions they integrate with the same code.
+MatX monodromy(const rigid::Moments& m, rigid::Sense sense, double tol) { return kit::grioli_monodromy(m, sense, tol); }
 
 // The same monodromy by central differences of the nonlinear flow over one period: an
 // independent check of the Jacobian and of the variational equations.
@@ -225,6 +195,9 @@ struct Map {
     std::vector<std::vector<double>> map;  // u, v, growth per period, rotation number
     double worst = -1, worst_u = 0, worst_v = 0;
     long unstable = 0;
+    // The gap the threshold kit::unstable_growth sits in: the largest growth of a stable grid
+    // point (the monodromy's own error) and the smallest of an unstable one.
+    double largest_stable = 0, smallest_unstable = 1e300;
     double flat_unstable = 0, flat_u_min = 2, flat_u_max = -1, edge_growth_B_A = -1e300, edge_growth_B_C = -1e300;
     double time_s = 0;
 };
@@ -253,8 +226,9 @@ Map stability_map(int nu, int nv, double tol) {
         1);
     for (const auto& r : map) {
         if (r.empty()) continue;
-        if (r[2] > 1e-4) ++unstable;
-        if (r[1] == 1.0 && r[2] > 1e-4)
+        if (r[2] > kit::unstable_growth) ++unstable, M.smallest_unstable = std::min(M.smallest_unstable, r[2]);
+        if (r[2] <= kit::unstable_growth) M.largest_stable = std::max(M.largest_stable, r[2]);
+        if (r[1] == 1.0 && r[2] > kit::unstable_growth)
             ++flat_unstable, flat_u_min = std::min(flat_u_min, r[0]), flat_u_max = std::max(flat_u_max, r[0]);
         if (r[0] < 1.0 / nu) edge_growth_B_A = std::max(edge_growth_B_A, r[2]);
         if (r[0] > 1 - 1.0 / nu) edge_growth_B_C = std::max(edge_growth_B_C, r[2]);
@@ -353,6 +327,9 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
     r.add("grid_points", static_cast<long>(nu * nv));
     r.add("unstable_points", unstable, "growth per period > 1e-4");
     r.add("unstable_fraction", double(unstable) / (nu * nv));
+    r.add("largest_stable_growth", M.largest_stable, "largest ln |mu| of a grid point at or below 1e-4: the noise");
+    r.add("smallest_unstable_growth", unstable > 0 ? M.smallest_unstable : -1.0,
+          "smallest ln |mu| of a grid point above 1e-4 (-1: none)");
     r.add("largest_growth_per_period", worst, "ln |mu| at the most unstable grid point");
     r.add("flat_unstable_fraction", flat_unstable / nu, "of the flat bodies v = 1 on the grid");
     r.add("flat_unstable_u_min", flat_unstable > 0 ? flat_u_min : -1.0);
