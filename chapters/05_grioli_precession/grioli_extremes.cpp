@@ -14,6 +14,7 @@
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
 #include "scene.hpp"
+#include "stability.hpp"
 
 using rigid::Vec3;
 
@@ -65,6 +66,66 @@ double worst(const Numbers& n, const Reference& r) {
 
 }  // namespace
 
+// The cases: C - A = 0.8 throughout the nearly symmetric ones; the flat ones have C - B = A.
+std::vector<Case> extreme_cases() {
+    std::vector<Case> cases = {{1.0, 0.5, 0.7, 1.0}};
+    for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, eps * 0.8, (1 - eps) * 0.8, 1.0});
+    for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, (1 - eps) * 0.8, eps * 0.8, 1.0});
+    cases.push_back({1.0, 0.5, 1.0, 1.0});   // flat: A + B = C
+    cases.push_back({1.0, 1e-9, 1.0, 1.0});  // flat and nearly symmetric
+    cases.push_back({1.0, 0.5, 0.7, 1e-6});
+    cases.push_back({1.0, 0.5, 0.7, 1e6});
+    return cases;
+}
+
+struct Results {
+    std::vector<std::vector<double>> table;
+    double worst_gap = 0, worst_integration = 0, closed_time = 0;
+    long unstable = 0, dominated = 0;
+};
+
+// Every case: the closed form against long double, both ways, and the integration against it.
+Results compute(double periods) {
+    Results r;
+    for (const Case& c : extreme_cases()) {
+        const rigid::Moments m = rigid::moments_from_gaps(c.A, c.BA, c.CB);
+        rigid::GrioliPrecession g{};
+        r.closed_time += kit::min_time([&] { g = rigid::grioli_precession(m, c.f, rigid::Sense::ccw); });
+        const Reference ref = reference(c);
+        const double e_gap = worst({g.alpha, g.theta, g.a, g.k}, ref), e_naive = worst(naive(c), ref);
+        const rigid::PrecessionCheck chk = rigid::integrate_grioli(
+            m, g, periods, 4, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
+        // Is the error physics? The Floquet multipliers of the case's precession (Chapter 7).
+        const kit::RunStability st = kit::run_stability(
+            m, rigid::Sense::ccw, {periods, chk.max_rotation_error, 1e-12, kit::rk8pd_steps(chk.stats.rhs_calls)});
+        r.unstable += st.stability.unstable(), r.dominated += st.verdict.dominated;
+        r.worst_gap = std::max(r.worst_gap, e_gap);
+        r.worst_integration = std::max(r.worst_integration, chk.max_rotation_error);
+        const double CA = c.BA + c.CB;
+        r.table.push_back({c.BA / CA, c.CB / CA, (c.A - c.CB) / c.A, c.f, g.theta, e_gap, e_naive,
+                           chk.max_rotation_error, chk.max_energy_drift, st.stability.multiplier(),
+                           st.stability.floquet.growth, st.verdict.dominated ? 1.0 : 0.0});
+    }
+    return r;
+}
+
+void report(kit::Scene& scene, double periods, const Results& r) {
+    scene.report.headline(
+        "largest relative error of alpha, theta, a, k from the gaps, against long double, over all cases", r.worst_gap,
+        r.closed_time);
+    scene.report.add("worst_integration_error", r.worst_integration, "max geodesic angle over the periods, every case");
+    scene.report.add("periods", static_cast<long>(periods));
+    scene.report.add("unstable_cases", r.unstable, "linearly unstable by the Floquet multipliers");
+    scene.report.add("dominated_cases", r.dominated, "cases whose rot_error the instability dominates");
+    scene.report.table("cases",
+                       {"(B-A)/(C-A)", "(C-B)/(C-A)", "(A+B-C)/A", "f", "theta", "err_gaps", "err_naive", "rot_error",
+                        "energy_drift", "floquet_mu", "floquet_growth", "dominated"},
+                       r.table);
+    scene.report.note(
+        "err_gaps: closed form from the gaps; err_naive: B, C rounded first and theta by acos; both "
+        "against long double. rot_error: rk8pd, tol 1e-12, over the periods.");
+}
+
 struct Params {
     long periods = 100;
 };
@@ -80,45 +141,12 @@ int main(int argc, char** argv) {
 
     return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
         const double periods = double(p.periods);
-        kit::require_budget(o,
-                            {12 * periods, ch5::seconds_per_period("rk8pd", 1e-12), "periods (12 cases)", "--periods"});
-        // C - A = 0.8 throughout the nearly symmetric cases; the flat ones have C - B = A.
-        std::vector<Case> cases = {{1.0, 0.5, 0.7, 1.0}};
-        for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, eps * 0.8, (1 - eps) * 0.8, 1.0});
-        for (double eps : {1e-3, 1e-6, 1e-9}) cases.push_back({1.0, (1 - eps) * 0.8, eps * 0.8, 1.0});
-        cases.push_back({1.0, 0.5, 1.0, 1.0});   // flat: A + B = C
-        cases.push_back({1.0, 1e-9, 1.0, 1.0});  // flat and nearly symmetric
-        cases.push_back({1.0, 0.5, 0.7, 1e-6});
-        cases.push_back({1.0, 0.5, 0.7, 1e6});
-
-        std::vector<std::vector<double>> table;
-        double worst_gap = 0, worst_integration = 0, closed_time = 0;
-        for (const Case& c : cases) {
-            const rigid::Moments m = rigid::moments_from_gaps(c.A, c.BA, c.CB);
-            rigid::GrioliPrecession g{};
-            closed_time += kit::min_time([&] { g = rigid::grioli_precession(m, c.f, rigid::Sense::ccw); });
-            const Reference ref = reference(c);
-            const double e_gap = worst({g.alpha, g.theta, g.a, g.k}, ref), e_naive = worst(naive(c), ref);
-            const rigid::PrecessionCheck chk = rigid::integrate_grioli(
-                m, g, periods, 4, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
-            worst_gap = std::max(worst_gap, e_gap);
-            worst_integration = std::max(worst_integration, chk.max_rotation_error);
-            const double CA = c.BA + c.CB;
-            table.push_back({c.BA / CA, c.CB / CA, (c.A - c.CB) / c.A, c.f, g.theta, e_gap, e_naive,
-                             chk.max_rotation_error, chk.max_energy_drift});
-        }
-        scene.report.headline(
-            "largest relative error of alpha, theta, a, k from the gaps, against long double, over all cases",
-            worst_gap, closed_time);
-        scene.report.add("worst_integration_error", worst_integration,
-                         "max geodesic angle over the periods, every case");
-        scene.report.add("periods", static_cast<long>(periods));
-        scene.report.table("cases",
-                           {"(B-A)/(C-A)", "(C-B)/(C-A)", "(A+B-C)/A", "f", "theta", "err_gaps", "err_naive",
-                            "rot_error", "energy_drift"},
-                           table);
-        scene.report.note(
-            "err_gaps: closed form from the gaps; err_naive: B, C rounded first and theta by acos; both "
-            "against long double. rot_error: rk8pd, tol 1e-12, over the periods.");
+        // Each case: --periods periods of rk8pd, and the monodromy matrix of its precession.
+        const std::size_t cases = extreme_cases().size();
+        kit::require_budget(
+            o, {double(cases) * periods,
+                ch5::seconds_per_period("rk8pd", 1e-12) + kit::monodromy_seconds(kit::monodromy_tol) / periods,
+                "periods (" + std::to_string(cases) + " cases)", "--periods"});
+        report(scene, periods, compute(periods));
     });
 }

@@ -31,6 +31,7 @@
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
+#include "stability.hpp"
 
 using rigid::Mat3;
 using rigid::Vec3;
@@ -111,32 +112,15 @@ Run integrate(const Hung& h, bool gaps, int periods, double tol, int repeats, lo
 }
 
 // The largest |eigenvalue| of the Jacobian of the gap form along the exact motion (8 instants of
-// one period), over alpha. Written out here from the gap form (the one of Chapter 4, built from
-// J, would cancel exactly as the naive equations do).
+// one period), over alpha. The Jacobian is the kit's, written out from the gap form (the one of
+// Chapter 4, built from J, would cancel exactly as the naive equations do).
 double jacobian_radius(const Hung& h) {
-    const rigid::Moments& m = h.m;
-    const double f = h.P.f, gBC = -m.C_minus_B, gCA = m.B_minus_A + m.C_minus_B, gAB = -m.B_minus_A;
     double radius = 0;
     for (int j = 0; j < 8; ++j) {
         const double t = j * 2 * std::numbers::pi / h.P.alpha / 8;
-        const Vec3 W = rigid::grioli_angular_velocity(h.P, t);
-        const Mat3 R = rigid::grioli_rotation(h.P, t);
-        Eigen::Matrix<double, 12, 12> D = Eigen::Matrix<double, 12, 12>::Zero();
-        D(0, 1) = gBC * W(2) / m.A, D(0, 2) = gBC * W(1) / m.A;
-        D(1, 0) = gCA * W(2) / m.B, D(1, 2) = gCA * W(0) / m.B;
-        D(2, 0) = gAB * W(1) / m.C, D(2, 1) = gAB * W(0) / m.C;
-        // f [R^T k, z0] = -f hat(z0) R^T k, and d(R^T k)_c / dR_ac = k_a.
-        const Mat3 G = -f * Vec3(1 / m.A, 1 / m.B, 1 / m.C).asDiagonal() * rigid::hat(h.z0);
-        for (int a = 0; a < 3; ++a)
-            for (int c = 0; c < 3; ++c) D.block<3, 1>(0, 3 + 3 * a + c) = G.col(c) * h.P.k(a);
-        const Mat3 Wh = rigid::hat(W);
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) {
-                for (int l = 0; l < 3; ++l) D(3 + 3 * i + k, 3 + 3 * i + l) = Wh(l, k);
-                for (int n = 0; n < 3; ++n) D(3 + 3 * i + k, n) = (R * rigid::hat(Vec3::Unit(n)))(i, k);
-            }
-        radius = std::max(
-            radius, Eigen::EigenSolver<Eigen::Matrix<double, 12, 12>>(D, false).eigenvalues().cwiseAbs().maxCoeff());
+        const rigid::BodyState y{rigid::grioli_angular_velocity(h.P, t), rigid::grioli_rotation(h.P, t)};
+        const kit::Mat12 D = kit::gap_jacobian(h.m, h.P.f, h.P.k, h.z0, y);
+        radius = std::max(radius, Eigen::EigenSolver<kit::Mat12>(D, false).eigenvalues().cwiseAbs().maxCoeff());
     }
     return radius / h.P.alpha;
 }
@@ -187,11 +171,14 @@ std::vector<double> decades(const Params& p) {
     return out;
 }
 
+// The work per period of a point: the gap form `repeats` times and its twin once, the naive form
+// (capped at naive_cap steps an output), and the point's monodromy matrix spread over its periods.
 void check_budget(const kit::Options& o, const Params& p) {
     const double per_period = ch5::seconds_per_period("rk8pd", p.tol);
-    kit::require_budget(
-        o, {double(bodies.size() * decades(p).size()) * p.periods,
-            per_period * (p.repeats + 1) + 16 * naive_cap * 2e-6 / 10, "periods", "--step, --periods, --repeats"});
+    kit::require_budget(o, {double(bodies.size() * decades(p).size()) * p.periods,
+                            per_period * (p.repeats + 1) + 16 * naive_cap * 2e-6 / 10 +
+                                kit::monodromy_seconds(kit::monodromy_tol) / p.periods,
+                            "periods", "--step, --periods, --repeats, --tol"});
 }
 
 // One body hung at 10^x body sizes: the gap form, a twin with Omega(0) changed by 1e-10 alpha,
@@ -204,6 +191,9 @@ std::vector<double> point(const Params& p, std::size_t b, double x) {
     const double rate = growth_rate(gap, twin), radius = jacobian_radius(h);
     // Exponential growth: faster than ln 2 per quarter of the run.
     const bool stable = !(rate > 4 * std::log(2.0) / p.periods);
+    // The same from the linearisation: the Floquet multipliers, and whether they made the error.
+    const kit::RunStability st = kit::run_stability(
+        h.m, rigid::Sense::ccw, {double(p.periods), gap.error, p.tol, kit::rk8pd_steps(gap.evaluations)});
     return {double(b),
             x,
             h.sm.C_minus_B,
@@ -217,7 +207,10 @@ std::vector<double> point(const Params& p, std::size_t b, double x) {
             naive.time_s,
             double(naive.evaluations),
             rate,
-            stable ? 1.0 : 0.0};
+            stable ? 1.0 : 0.0,
+            st.stability.multiplier(),
+            st.stability.floquet.growth,
+            st.verdict.dominated ? 1.0 : 0.0};
 }
 
 const std::vector<std::string> columns = {"body",
@@ -233,12 +226,20 @@ const std::vector<std::string> columns = {"body",
                                           "naive_time_s",
                                           "naive_evaluations",
                                           "growth_per_period",
-                                          "stable"};
+                                          "stable",
+                                          "floquet_mu",
+                                          "floquet_growth",
+                                          "dominated"};
 
 // What the table says: the worst stable error, the unstable points, the slowest run...
 struct Summary {
     double worst_stable = 0, slowest = 0, worst_radius = 0, naive_first_fail = nan_;
     long unstable = 0;
+    // The Floquet multipliers against the measured growth: points unstable by the multipliers,
+    // those whose error the instability dominates, the points where the two verdicts differ, and
+    // the measured growth over ln |mu| where both say unstable (its extremes).
+    long floquet_unstable = 0, dominated = 0, disagreements = 0;
+    double growth_ratio_min = nan_, growth_ratio_max = nan_;
 };
 
 Summary summarise(const std::vector<std::vector<double>>& rows) {
@@ -253,6 +254,15 @@ Summary summarise(const std::vector<std::vector<double>>& rows) {
         s.worst_radius = std::max(s.worst_radius, r[5]);
         const bool naive_ok = !std::isnan(r[9]) && r[9] <= 1e-9;  // NaN: the naive form gave up
         if (r[0] == 0 && stable && !naive_ok && std::isnan(s.naive_first_fail)) s.naive_first_fail = r[1];
+        const bool floquet_unstable = r[15] > kit::unstable_growth;
+        s.floquet_unstable += floquet_unstable;
+        s.dominated += r[16] > 0;
+        s.disagreements += floquet_unstable == stable;
+        if (floquet_unstable && !stable) {
+            const double ratio = r[12] / r[15];
+            s.growth_ratio_min = std::isnan(s.growth_ratio_min) ? ratio : std::min(s.growth_ratio_min, ratio);
+            s.growth_ratio_max = std::isnan(s.growth_ratio_max) ? ratio : std::max(s.growth_ratio_max, ratio);
+        }
     }
     return s;
 }
@@ -267,6 +277,15 @@ void report(kit::Scene& scene, const Params& p, const std::vector<std::vector<do
     scene.report.add("tol", p.tol);
     scene.report.add("points", static_cast<long>(rows.size()), "bodies x distances");
     scene.report.add("unstable_points", s.unstable, "in an instability tongue of Chapter 7: exponential growth");
+    scene.report.add("floquet_unstable_points", s.floquet_unstable,
+                     "linearly unstable by the Floquet multipliers (ln |mu| > 1e-4 per period)");
+    scene.report.add("dominated_points", s.dominated, "points whose gap-form error the instability dominates");
+    scene.report.add("stability_disagreements", s.disagreements,
+                     "points where the measured growth and the Floquet multipliers disagree on stability");
+    scene.report.add("growth_over_floquet_min", s.growth_ratio_min,
+                     "measured growth per period over ln |mu|, points unstable by both: the smallest");
+    scene.report.add("growth_over_floquet_max", s.growth_ratio_max,
+                     "the largest (below 1 where the deviation has grown to order 1 before the run ends)");
     scene.report.add("slowest_gap_run_s", s.slowest, "the longest run time of the gap form over every point");
     scene.report.add("largest_jacobian_radius_over_alpha", s.worst_radius,
                      "max over every point of max |eigenvalue| / alpha: sqrt(2) = 1.414 for every L");
@@ -295,9 +314,15 @@ void report(kit::Scene& scene, const Params& p, const std::vector<std::vector<do
 }
 
 // One panel: the error (panel 0) or the run time (panel 1) of both forms, every body.
-void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, int panel) {
-    fig << (panel == 0 ? "set title 'error against Theorem 1 (×: unstable, Chapter 7; at 30: naive gave up)'\n"
-                         "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
+// The error panel's title says what the × points are: when the instability dominates the error
+// at every one of them, it says so.
+void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, const Summary& s, int panel) {
+    const std::string crosses = s.unstable > 0 && s.dominated == s.unstable
+                                    ? "×: linearly unstable, the error dominated by the instability"
+                                    : "×: unstable, Chapter 7";
+    fig << (panel == 0 ? "set title 'error against Theorem 1 (" + crosses +
+                             "; at 30: naive gave up)'\n"
+                             "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
                        : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
     std::string plot = "plot ";
     std::vector<std::vector<std::vector<double>>> blocks;
@@ -323,7 +348,7 @@ void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, 
     for (const auto& bl : blocks) fig.data(bl);
 }
 
-void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<double>>& rows) {
+void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<double>>& rows, const Summary& s) {
     kit::Figure fig(scene, "euler_gap_form.svg", 1100, 480);
     if (!fig.enabled()) return;
     fig << "set encoding utf8\nset multiplot layout 1, 2 title 'A body hung at L on a Grioli line, " +
@@ -331,8 +356,8 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
                " periods of rk8pd: Euler equations naive (open, dashed) and on the moment gaps (filled, solid)'\n"
                "set logscale y\nset format y '10^{%T}'\nset xlabel 'log_{10} of L in body sizes sqrt(C_g/μ)'\n"
                "set xrange [-6.3:8.3]\nset xtics 2\nset key below font ',9' maxrows 3\n";
-    draw_panel(fig, rows, 0);
-    draw_panel(fig, rows, 1);
+    draw_panel(fig, rows, s, 0);
+    draw_panel(fig, rows, s, 1);
     fig << "unset multiplot\n";
     fig.finish();
 }
@@ -349,7 +374,8 @@ int main(int argc, char** argv) {
         std::vector<std::vector<double>> rows;  // one per body and distance
         for (std::size_t b = 0; b < bodies.size(); ++b)
             for (double x : decades(p)) rows.push_back(point(p, b, x));
-        report(scene, p, rows, summarise(rows));
-        draw(scene, p, rows);
+        const Summary s = summarise(rows);
+        report(scene, p, rows, s);
+        draw(scene, p, rows, s);
     });
 }

@@ -34,6 +34,7 @@
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/rotation.hpp"
+#include "stability.hpp"
 
 using rigid::Mat3;
 using rigid::Vec3;
@@ -210,6 +211,10 @@ void report(kit::Scene& scene, const Params& p, const Hung& h, const Integration
     scene.report.add("rhs_calls", r.stats.rhs_calls, "one run");
     scene.report.add("max_rotation_error", r.max_error, "radians");
     scene.report.add("period", h.period);
+    // Is the error physics? The Floquet multipliers of this precession (Chapter 7), and whether
+    // they, not the arithmetic, made the error (kit/stability.hpp says by which rule).
+    kit::report_stability(scene.report, h.m, h.P.sense,
+                          {double(p.periods), r.max_error, p.tol, kit::rk8pd_steps(r.stats.rhs_calls)});
 }
 
 // ------------------------------------------------------------------ the book's motion viewer
