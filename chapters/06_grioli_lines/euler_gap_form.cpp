@@ -24,7 +24,6 @@
 #include <string>
 #include <vector>
 
-#include "../05_grioli_precession/common.hpp"
 #include "common.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
@@ -171,14 +170,19 @@ std::vector<double> decades(const Params& p) {
     return out;
 }
 
-// The work per period of a point: the gap form `repeats` times and its twin once, the naive form
-// (capped at naive_cap steps an output), and the point's monodromy matrix spread over its periods.
+// The work per period of a point: 2 repeats + 1 runs of rk8pd (the gap form `repeats` times, its
+// twin once, the naive form `repeats` times; a run of either form near the body costs about the
+// same), plus what the naive form spends far out chasing round-off up to its cap of naive_cap
+// steps an output, plus the point's monodromy matrix spread over its periods. Fitted to the CPU
+// time of the default sweep (228 points, 100 periods, repeats 2) on one core of the 2-core
+// machine at load 10: 12.6 s at tol 1e-8 and 28.7 s at 1e-14, so a run 3.1e-6 tol^(-1/8) s a
+// period and the capped naive runs 2e-4 s a period each; raised by 30%.
 void check_budget(const kit::Options& o, const Params& p) {
-    const double per_period = ch5::seconds_per_period("rk8pd", p.tol);
-    kit::require_budget(o, {double(bodies.size() * decades(p).size()) * p.periods,
-                            per_period * (p.repeats + 1) + 16 * naive_cap * 2e-6 / 10 +
-                                kit::monodromy_seconds(kit::monodromy_tol) / p.periods,
-                            "periods", "--step, --periods, --repeats, --tol"});
+    const double runs = 2.0 * p.repeats + 1;
+    const double per_period = 1.3 * (runs * 3.1e-6 * std::pow(p.tol, -1.0 / 8) + p.repeats * 2e-4) +
+                              kit::monodromy_seconds(kit::monodromy_tol) / p.periods;
+    kit::require_budget(o, {double(bodies.size() * decades(p).size()) * p.periods, per_period, "periods",
+                            "--step, --periods, --repeats, --tol"});
 }
 
 // One body hung at 10^x body sizes: the gap form, a twin with Omega(0) changed by 1e-10 alpha,

@@ -23,7 +23,6 @@
 #include <string>
 #include <vector>
 
-#include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
 #include "motion.hpp"
 #include "rigid/grioli.hpp"
@@ -187,6 +186,24 @@ void declare(kit::Options& opts, Params& p) {
         .integer("periods", &p.periods, "periods followed after a perturbation", 20, 100000)
         .real("tol", &p.tol, "rk8pd tolerance for the monodromy and the perturbed runs", kit::between(1e-14, 1e-6))
         .file("motion", &p.motion_file, kit::motion_help);
+}
+
+// The run time of one period of rk8pd on the Euler-Poisson equations (Chapter 4's right-hand
+// side, which solves with J) at tolerance tol: c tol^(-1/8) s. CPU time on one core of the
+// 2-core machine at load 6 to 12: c = 5.3e-6 to 6.5e-6 (tol = 1e-8 ... 1e-14); c = 8e-6.
+double seconds_per_period(double tol) { return 8e-6 * std::pow(tol, -1.0 / 8); }
+
+// The work, in periods of rk8pd at --tol: a monodromy matrix per grid point, three for the checks
+// of the tongue and six for the perturbed bodies (kit::monodromy_seconds each); 18 perturbed runs
+// over --periods, and at 1e-12 or tighter the settled runs of the two bodies that grow
+// exponentially, (1, 3, 4) and the tongue, with the 24 one-period flows of the check by
+// differences; the motion's two runs of 30 periods.
+kit::Work work(const Params& p) {
+    const double period = seconds_per_period(p.tol), tight = seconds_per_period(std::min(p.tol, 1e-12));
+    const double seconds = kit::monodromy_seconds(p.tol) * double(p.nu * p.nv + 9) +
+                           period * (18.0 * double(p.periods) + (p.motion_file.empty() ? 0 : 60)) +
+                           tight * (2.0 * double(p.periods) + 24);
+    return {seconds / period, period, "periods of rk8pd", "--nu, --nv, --periods, --tol"};
 }
 
 // (1) The map of the largest multiplier over the shapes, and its edges: the flat bodies (v = 1)
@@ -529,10 +546,7 @@ int main(int argc, char** argv) {
     declare(opts, p);
     return kit::run(argc, argv, opts, [&p](const kit::Options& o, kit::Scene& scene) {
         const int nu = static_cast<int>(p.nu), nv = static_cast<int>(p.nv), periods = static_cast<int>(p.periods);
-        // The work: a monodromy matrix (13 equations over one period) per grid point, and 18
-        // perturbed runs over `periods` periods.
-        kit::require_budget(o, {13.0 * nu * nv + 18.0 * periods, ch5::seconds_per_period("rk8pd", p.tol),
-                                "periods of rk8pd", "--nu, --nv, --periods, --tol"});
+        kit::require_budget(o, work(p));
         const Map map = stability_map(nu, nv, p.tol);
         const rigid::Moments tongue = shape(map.worst_u, map.worst_v);
         const Checks checks = check_tongue(tongue, p.tol);
