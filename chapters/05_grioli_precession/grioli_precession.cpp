@@ -11,6 +11,7 @@
 // does not correlate: its phase error grows like t^(3/2) (Brouwer's law).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -21,6 +22,7 @@
 #include "rigid/rotation.hpp"
 #include "rigid/taylor.hpp"
 #include "scene.hpp"
+#include "stability.hpp"
 
 using rigid::Vec3;
 
@@ -80,6 +82,7 @@ void check_budget(const kit::Options& o, const Params& p) {
 }
 
 struct Integration {
+    rigid::Moments m;
     rigid::GrioliPrecession g;
     rigid::OdeSettings settings;
     rigid::PrecessionCheck c;
@@ -133,7 +136,7 @@ Integration integrate(const Params& p) {
                                    : rigid::integrate_grioli(m, g, double(p.periods), p.samples, settings);
         },
         p.periods <= 1000 ? 3 : 1);
-    return {g, settings, c, run_time};
+    return {m, g, settings, c, run_time};
 }
 // end snippet
 
@@ -164,6 +167,14 @@ void report(kit::Scene& scene, const Params& p, const Integration& r) {
     scene.report.add("abs_tol", r.settings.abs_tol);
     scene.report.add("rhs_calls", c.stats.rhs_calls, r.settings.method == "taylor" ? "Taylor steps" : "one run");
     scene.report.add("jacobian_calls", c.stats.jacobian_calls);
+    // Is the error physics? The precession's Floquet multipliers (Chapter 7), and whether they,
+    // not the arithmetic, made the error. The Taylor method has no tolerance: its steps gather
+    // round-off, about eps each.
+    const bool taylor = r.settings.method == "taylor";
+    kit::report_stability(
+        scene.report, r.m, g.sense,
+        {double(p.periods), c.max_rotation_error, taylor ? std::numeric_limits<double>::epsilon() : r.settings.rel_tol,
+         taylor ? double(c.stats.rhs_calls) : kit::rk8pd_steps(c.stats.rhs_calls)});
 }
 
 }  // namespace
