@@ -51,3 +51,28 @@ TEST_CASE("json: invalid UTF-8 in a student's output becomes U+FFFD, not an exce
     const auto j = nlohmann::json::parse(text);
     CHECK(j["tests"][0]["output"].get<std::string>().find("bad \xEF\xBF\xBD byte") != std::string::npos);
 }
+
+TEST_CASE("json: every verdict reads back from results .tsv as written, and a word that names none is refused") {
+    grading::SubmissionResult r = one_result("s", "");
+    r.fingerprint = "f";
+    r.tests.clear();
+    for (const grading::Verdict v : grading::test_verdicts)
+        r.tests.push_back({"ch01", "rotation", "hat", "hat: " + grading::to_string(v), v, 0, 1, false, "m", ""});
+    const auto file =
+        std::filesystem::temp_directory_path() / ("workbook_verdict_test_" + std::to_string(::getpid()) + ".tsv");
+    const std::string tsv = grading::results_tsv(r);
+    REQUIRE(grading::write_file(file.string(), tsv));
+    grading::SubmissionResult back;
+    REQUIRE(grading::read_results_tsv(file.string(), back));
+    REQUIRE(back.tests.size() == grading::test_verdicts.size());
+    for (std::size_t k = 0; k < back.tests.size(); ++k) CHECK(back.tests[k].verdict == grading::test_verdicts[k]);
+    CHECK(tsv.find("\tbuild error\t") != std::string::npos);  // the words of the files, unchanged
+    CHECK(tsv.find("\tbuild_error\t") == std::string::npos);
+    REQUIRE(grading::write_file(file.string(), grading::replace_all(tsv, "\tcrash\t", "\tcrashed\t")));
+    CHECK_FALSE(grading::read_results_tsv(file.string(), back));
+    std::filesystem::remove(file);
+    grading::Verdict v = grading::Verdict::pass;
+    CHECK(grading::from_string("not started", v));
+    CHECK(v == grading::Verdict::not_started);
+    CHECK_FALSE(grading::from_string("Pass", v));
+}
