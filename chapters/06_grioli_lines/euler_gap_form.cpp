@@ -321,13 +321,14 @@ void report(kit::Scene& scene, const Params& p, const std::vector<std::vector<do
 // The error panel's title says what the × points are: when the instability dominates the error
 // at every one of them, it says so.
 void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, const Summary& s, int panel) {
-    const std::string crosses = s.unstable > 0 && s.dominated == s.unstable
-                                    ? "×: linearly unstable, the error dominated by the instability"
-                                    : "×: unstable, Chapter 7";
-    fig << (panel == 0 ? "set title 'error against Theorem 1 (" + crosses +
-                             "; at 30: naive gave up)'\n"
-                             "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
-                       : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
+    const std::string dominated =
+        s.unstable > 0 && s.dominated == s.unstable ? "\\nat ×, the error is dominated by the instability" : "";
+    // A double-quoted gnuplot string, so that \n breaks the title's line.
+    fig << (panel == 0
+                ? "set title \"error against Theorem 1 (×: unstable, Chapter 7; at 30: naive gave up)" + dominated +
+                      "\"\n"
+                      "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
+                : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
     std::string plot = "plot ";
     std::vector<std::vector<std::vector<double>>> blocks;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
