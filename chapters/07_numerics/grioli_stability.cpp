@@ -325,12 +325,35 @@ Checks check_tongue(const rigid::Moments& tongue, double tol) {
             floquet(monodromy(tongue, rigid::Sense::cw, tol))};
 }
 
+// The keys of each perturbed body: its fits at delta = 1e-6, its Floquet growth and rotation
+// number, and the settled rate of the bodies that grow exponentially.
+void report_bodies(kit::Report& r, const Perturbed& P) {
+    const auto& bodies = P.bodies;
+    const auto &rows = P.rows, &settled_rows = P.settled_rows;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const auto& row = rows[3 * b + 1];  // delta = 1e-6
+        const std::string k = "body" + std::to_string(b) + "_";
+        r.add(k + "name", bodies[b].name);
+        r.add(k + "power", row[2], "fitted d ~ t^power, delta = 1e-6");
+        r.add(k + "rate", row[3], "fitted d ~ exp(rate t/P) on the later half before d = 0.01, delta = 1e-6");
+        r.add(k + "floquet_growth", row[7], "ln |mu| per period");
+        r.add(k + "rotation_number", row[11], "arg(mu) / 2 pi of the multiplier pair farthest from 1");
+        // Measured for the bodies that grow exponentially; null (not measured) for the others.
+        r.add(k + "settled_rate", settled_rows[b][1],
+              "growth per period over the last window before d = 0.01, delta = 1e-10");
+        r.add(k + "settled_window_start", settled_rows[b][2]);
+        r.add(k + "settled_window_periods", settled_rows[b][3]);
+        r.add(k + "settled_over_floquet", settled_rows[b][1] / settled_rows[b][4]);
+        r.add(k + "verdict", row[6] > 0.5 ? std::string("exponential") : std::string("linear"));
+        r.add(k + "final_over_delta", row[8], "d(end) / delta, delta = 1e-6");
+    }
+}
+
 void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rigid::Moments& tongue, const Checks& c,
             const Perturbed& P) {
     const auto& [f_var, f_fd, f_cw] = c;
     const auto& map = M.map;
-    const auto& bodies = P.bodies;
-    const auto &rows = P.rows, &settled_rows = P.settled_rows;
+    const auto& rows = P.rows;
     const double map_time = M.time_s, perturb_time = P.time_s;
     const double worst = M.worst, worst_u = M.worst_u, worst_v = M.worst_v, flat_unstable = M.flat_unstable;
     const double flat_u_min = M.flat_u_min, flat_u_max = M.flat_u_max;
@@ -367,23 +390,7 @@ void report(kit::Report& r, int nu, int nv, int periods, const Map& M, const rig
     r.add("periods", static_cast<long>(periods));
     r.add("linear_bodies", static_cast<long>(linear_bodies));
     r.add("exponential_bodies", static_cast<long>(exponential_bodies));
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-        const auto& row = rows[3 * b + 1];  // delta = 1e-6
-        const std::string k = "body" + std::to_string(b) + "_";
-        r.add(k + "name", bodies[b].name);
-        r.add(k + "power", row[2], "fitted d ~ t^power, delta = 1e-6");
-        r.add(k + "rate", row[3], "fitted d ~ exp(rate t/P) on the later half before d = 0.01, delta = 1e-6");
-        r.add(k + "floquet_growth", row[7], "ln |mu| per period");
-        r.add(k + "rotation_number", row[11], "arg(mu) / 2 pi of the multiplier pair farthest from 1");
-        // Measured for the bodies that grow exponentially; null (not measured) for the others.
-        r.add(k + "settled_rate", settled_rows[b][1],
-              "growth per period over the last window before d = 0.01, delta = 1e-10");
-        r.add(k + "settled_window_start", settled_rows[b][2]);
-        r.add(k + "settled_window_periods", settled_rows[b][3]);
-        r.add(k + "settled_over_floquet", settled_rows[b][1] / settled_rows[b][4]);
-        r.add(k + "verdict", row[6] > 0.5 ? std::string("exponential") : std::string("linear"));
-        r.add(k + "final_over_delta", row[8], "d(end) / delta, delta = 1e-6");
-    }
+    report_bodies(r, P);
     r.table("perturbations",
             {"body", "delta", "power", "rate_per_period", "r2_power", "r2_rate", "exponential",
              "floquet_growth_per_period", "final_over_delta", "window_rate", "window_start", "rotation_number"},
