@@ -134,17 +134,19 @@ build/solutions/scenes/lost_scene
 ```
 
 The error is <!-- value: mini_scene.no_such_key run=default fmt=%.2g -->1e-3<!-- end value -->, the table
-gives <!-- value: mini_scene.by_case[order=3].error run=default -->0.1<!-- end value -->, and a bad format
-<!-- value: mini_scene.error run=default fmt=%q -->x<!-- end value -->; a good one
-<!-- value: mini_scene.by_case[order=2].error run=default fmt=%.2f -->0.25<!-- end value -->.
-A value of no run <!-- value: mini_scene.error fmt=%.1g -->0.002<!-- end value -->, of a run never declared
-<!-- value: mini_scene.error run=quick -->0.002<!-- end value -->, of a run whose report was made with other
-options <!-- value: mini_scene.error run=long fmt=%.0e -->1e-09<!-- end value -->, not measured
-<!-- value: mini_scene.not_measured run=default -->-1<!-- end value -->, not finite
-<!-- value: mini_scene.not_finite run=default -->nan<!-- end value -->, a word that says it is missing
-<!-- value: mini_scene.fastest run=default -->none<!-- end value -->, stale text
-<!-- value: mini_scene.error run=default fmt=%.2g -->0.002<!-- end value -->, and a key the scene no longer reports
-<!-- value: mini_scene.gone run=default fmt=%d -->3<!-- end value -->.
+gives <!-- value: mini_scene.by_case[order=3].error run=default -->0.1<!-- end value -->, and a bad
+format <!-- value: mini_scene.error run=default fmt=%q -->x<!-- end value -->; a good
+one <!-- value: mini_scene.by_case[order=2].error run=default fmt=%.2f -->0.25<!-- end value -->.
+A value of no run <!-- value: mini_scene.error fmt=%.1g -->0.002<!-- end value -->, of a run never
+declared <!-- value: mini_scene.error run=quick -->0.002<!-- end value -->, of a run whose report was made with other
+options <!-- value: mini_scene.error run=long fmt=%.0e -->1e-09<!-- end value -->, not
+measured <!-- value: mini_scene.not_measured run=default -->-1<!-- end value -->, not
+finite <!-- value: mini_scene.not_finite run=default -->nan<!-- end value -->, a word that says it is
+missing <!-- value: mini_scene.fastest run=default -->none<!-- end value -->, stale
+text <!-- value: mini_scene.error run=default fmt=%.2g -->0.002<!-- end value -->, and a key the scene no longer
+reports <!-- value: mini_scene.gone run=default fmt=%d -->3<!-- end value -->.
+A line that starts with a tag (GitHub shows it as raw HTML):
+<!--exact-->2.5 is half of 5.
 
 Math that pandoc cannot read: $\unknowncmd{x}$.
 
@@ -213,6 +215,7 @@ check("snippets --check-numbers"
          "the tag <!--input--> has 1 number\\(s\\) left" "'section 1.2' is not a link"
          "names section 1.2 but does not lead to its heading"
          "01_mini/README.md:[0-9]+: 8.8888 looks measured" "01_mini/README.md:[0-9]+: 3.3333 looks measured"
+         "01_mini/README.md:[0-9]+: starts with a value marker or a number tag"
   COMMAND "${SNIPPETS}" --check-numbers "${tree}")
 check("snippets --check-values"
   EXPECT "the hand value 0.4999 is 0.0001 from the run's 0.5 "
@@ -248,6 +251,7 @@ check("book --render"
          "broken link: ../02_missing/README.md" "names #9-nowhere" "Could not convert TeX math"
          "'mini_scene.not_measured' is -1 in the run 'default'" "has no run 'quick'"
          "comes from the run 'long' with --long no" "the hand value 0.4999 is 0.0001 from the run's 0.5"
+         "01_mini/README.md:[0-9]+: starts with a value marker or a number tag"
   COMMAND "${BOOK}" --render "${tree}" --runs "${tree}/runs.txt" --out "${WORK}/book" --pandoc "${PANDOC}" --strict
           --contents "${tree}/contents.json")
 check("book --check-figures"

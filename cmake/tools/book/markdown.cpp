@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <regex>
@@ -18,22 +19,28 @@ namespace {
 // 0 when it has none.
 int take_position(Json& attr) {
     if (!attr.is_array() || attr.size() != 3 || !attr[0].is_string() || !attr[2].is_array()) return 0;
+    // A list item has two: the item's, then its text's ("1:3-2:1;2:3-3:1"); the first is its line.
     auto& pairs = attr[2];
-    for (auto it = pairs.begin(); it != pairs.end(); ++it) {
-        if (!it->is_array() || it->size() != 2 || (*it)[0] != "data-pos") continue;
+    int line = 0;
+    for (auto it = pairs.begin(); it != pairs.end();) {
+        if (!it->is_array() || it->size() != 2 || (*it)[0] != "data-pos") {
+            ++it;
+            continue;
+        }
         const std::string pos = (*it)[1].get<std::string>();
         const auto at = pos.rfind('@');
-        pairs.erase(it);
-        return at == std::string::npos ? 0 : std::atoi(pos.c_str() + at + 1);
+        if (!line && at != std::string::npos) line = std::atoi(pos.c_str() + at + 1);
+        it = pairs.erase(it);
     }
-    return 0;
+    return line;
 }
 
 // A Span or Div that only carries a position: what sourcepos wraps around every node.
 bool is_wrapper(const Json& node) {
     if (!node.is_object() || !(is(node, "Span") || is(node, "Div"))) return false;
     const Json& attr = node["c"][0];
-    return attr[0] == "" && attr[1].empty() && attr[2].size() == 1 && attr[2][0][0] == "data-pos";
+    return attr[0] == "" && attr[1].empty() && !attr[2].empty() &&
+           std::all_of(attr[2].begin(), attr[2].end(), [](const Json& pair) { return pair[0] == "data-pos"; });
 }
 
 Json fold(Json node, int line);
@@ -124,7 +131,7 @@ Page read_page(const fs::path& file, const std::string& pandoc) {
     std::ostringstream text;
     text << in.rdbuf();
     Json tree = parse(file, text.str(), pandoc);
-    Page page{file, source_lines(file), fold(std::move(tree["blocks"]), 0)};
+    Page page{file, source_lines(file), fold(std::move(tree["blocks"]), 0), tree["pandoc-api-version"]};
     place_raw_blocks(page.blocks, page.lines);
     return page;
 }
@@ -183,6 +190,13 @@ std::map<int, std::vector<std::string>> value_marker_lines(const Page& page) {
         return true;
     });
     return out;
+}
+
+bool starts_with_inline_marker(const std::string& html) {
+    // A value marker's opening or closing comment, or a comment of one word (a number tag's grammar,
+    // prose.hpp: "<!--exact-->", "<!--P:3-->").
+    static const std::regex marker(R"(^\s*<!--\s*(value:|end value\s*-->|[A-Za-z]+(:[0-9]+)?\s*-->))");
+    return std::regex_search(html, marker);
 }
 
 namespace {

@@ -8,10 +8,11 @@
 // those wrappers out again (their contents take their place) and gives every node a "line"
 // (1-based, of the page's source), inherited from the nearest node that has one.
 //
-// Two things the tree cannot say, which the checks read from the source line a node gives:
-// how many cells an author wrote in a table row (pandoc pads a short row with empty cells), and
-// the text of a line that CommonMark takes for raw HTML (a line that starts with "<!--", e.g. a
-// value marker: its whole line is a RawBlock).
+// What the tree cannot say, which the checks read from the source line a node gives: how many
+// cells an author wrote in a table row (pandoc pads a short row with empty cells), and the lines
+// of a raw HTML block (CommonMark's: a line that starts with "<!--" or a tag is a RawBlock whole;
+// the prose keeps value markers and number tags off the start of a line, see
+// starts_with_inline_marker).
 #pragma once
 
 #include <filesystem>
@@ -30,6 +31,7 @@ struct Page {
     fs::path file;
     std::vector<std::string> lines;  // the source, for the two things above
     Json blocks;                     // the document's blocks, positions folded in
+    Json api_version;                // pandoc's "pandoc-api-version", to write the tree back
 };
 
 // Reads and parses one page; throws when pandoc cannot.
@@ -62,6 +64,11 @@ namespace md {
 // paragraph is a RawInline; one that starts a line is a RawBlock of that whole line (CommonMark's
 // HTML block), read with the marker's own grammar (prose.hpp).
 std::map<int, std::vector<std::string>> value_marker_lines(const Page& page);
+
+// Whether raw HTML starts (after blanks) with a marker that belongs inside a paragraph: a value
+// marker "<!-- value: ... -->" or a number tag "<!--exact-->" (prose.hpp). At the start of a
+// line CommonMark takes the whole line for an HTML block: the prose keeps them off it.
+bool starts_with_inline_marker(const std::string& html);
 
 // A quotation of a code snippet: "<!-- snippet: NAME -->", a code block, "<!-- end snippet -->".
 struct Quotation {

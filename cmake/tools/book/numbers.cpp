@@ -194,7 +194,13 @@ private:
     // value marker or <summary>). The tree has its source text only; read line by line as before
     // the tree: comments, markers, `code` and link targets masked, the rest prose.
     void raw_block(const md::Json& b) {
-        std::istringstream lines(b["c"][1].get<std::string>());
+        const std::string html = b["c"][1].get<std::string>();
+        if (md::starts_with_inline_marker(html))
+            problems_.push_back(where(md::line(b)) +
+                                ": starts with a value marker or a number tag: CommonMark (GitHub, pandoc) takes "
+                                "the whole line for raw HTML, shows its math and emphasis as typed and breaks the "
+                                "paragraph there; move the last word of the line before onto this one");
+        std::istringstream lines(html);
         int at = md::line(b);
         bool in_comment = false;
         for (std::string line; std::getline(lines, line); ++at) {

@@ -18,6 +18,7 @@
 #include <ctime>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <string>
@@ -40,55 +41,39 @@ struct Image {
     std::string alt, src;
 };
 
-// What the render does to a page's lines, found in the page's tree (markdown.hpp): the lines with
-// an HTML comment outside code (value markers and number tags: replaced, dropped), the quotations
-// of snippets (their markers: a link to the source), the motion markers, the figures. Every other
-// line, code included, goes to pandoc as it is.
-struct PagePlan {
-    std::map<int, std::string> snippets;  // the line of a quotation's marker -> the snippet's name
-    std::set<int> skip;                   // the lines of the quotations' end markers
-    std::map<int, std::string> motions;   // the line of a motion marker -> the motion's JSON
-    std::map<int, Image> images;          // the line of a figure -> the figure
-    std::set<int> comments;               // the lines with an HTML comment outside code
-};
-
 // A paragraph that is one image: a figure when its line is the image alone, as GitHub shows it;
 // its alt text as written (the caption), its target as pandoc read it.
-void plan_image(const md::Json& para, const std::vector<std::string>& lines, PagePlan& plan) {
+std::optional<Image> figure_of(const md::Json& para, const std::vector<std::string>& lines) {
+    if (!md::is(para, "Para") || para["c"].size() != 1 || !md::is(para["c"][0], "Image")) return std::nullopt;
     const int at = md::line(para);
-    if (at < 1 || static_cast<std::size_t>(at) > lines.size()) return;
+    if (at < 1 || static_cast<std::size_t>(at) > lines.size()) return std::nullopt;
     std::string l = lines[static_cast<std::size_t>(at) - 1];
     l.erase(l.find_last_not_of(" \t\r") + 1);
     const std::string src = para["c"][0]["c"][2][0].get<std::string>(), tail = "](" + src + ")";
     if (l.rfind("![", 0) != 0 || l.size() < tail.size() + 2 ||
         l.compare(l.size() - tail.size(), tail.size(), tail) != 0)
-        return;
-    plan.images[at] = Image{l.substr(2, l.size() - tail.size() - 2), src};
+        return std::nullopt;
+    return Image{l.substr(2, l.size() - tail.size() - 2), src};
 }
 
-PagePlan plan_page(const std::vector<std::string>& lines, const fs::path& scratch) {
-    std::string text;
-    for (const auto& l : lines) text += l + "\n";
-    prose::write_text(scratch, text);
-    const md::Page tree = md::read_page(scratch);
-    PagePlan plan;
-    for (const auto& q : md::quotations(tree)) {
-        plan.snippets[q.line] = q.name;
-        if (q.end_line) plan.skip.insert(q.end_line);
-    }
-    static const std::regex motion(R"(^<!-- motion: (\S+) -->\s*$)");  // the marker's own grammar
-    md::walk(tree.blocks, [&](const md::Json& n) {
-        const std::string html = md::raw_html(n);
-        std::smatch m;
-        if (html.find("<!--") != std::string::npos) {
-            const auto spans = std::count(html.begin(), html.end(), '\n') + (html.back() == '\n' ? 0 : 1);
-            for (int k = 0; k < std::max<int>(1, static_cast<int>(spans)); ++k) plan.comments.insert(md::line(n) + k);
-        }
-        if (md::is(n, "RawBlock") && std::regex_match(html, m, motion)) plan.motions[md::line(n)] = m[1];
-        if (md::is(n, "Para") && n["c"].size() == 1 && md::is(n["c"][0], "Image")) plan_image(n, lines, plan);
-        return true;
-    });
-    return plan;
+// A node of raw HTML for pandoc's tree ("RawBlock" or "RawInline").
+md::Json raw_html_node(const char* kind, std::string html) {
+    html.erase(html.find_last_not_of('\n') + 1);  // pandoc ends a block itself
+    return md::Json{{"t", kind}, {"c", md::Json::array({"html", html})}};
+}
+
+// Takes out the positions md::read_page gave every node ("line"): they are not pandoc's.
+void strip_lines(md::Json& node) {
+    if (node.is_object()) node.erase("line");
+    if (node.is_array() || node.is_object())
+        for (auto& item : node) strip_lines(item);
+}
+
+// Whether an array of pandoc's tree is a list of nodes (blocks or inlines), not a tuple such as
+// a header's [level, attributes, inlines].
+bool is_node_list(const md::Json& a) {
+    return a.is_array() && !a.empty() &&
+           std::all_of(a.begin(), a.end(), [](const md::Json& n) { return n.is_object() && n.contains("t"); });
 }
 
 struct Page {
@@ -97,6 +82,24 @@ struct Page {
     std::string kind;   // contents | chapter | page | code
     std::string title;  // for <title> and the navigation
     int chapter = 0;    // 1.. for chapters
+};
+
+// One page's render in progress: where its quotations' markers are, the figures and motions so
+// far, and how many value markers of each source line are done.
+struct PageWork {
+    const Page& page;
+    const md::Page& tree;
+    std::string file;                     // the source, relative to the workbook, for messages
+    std::map<int, std::string> snippets;  // the line of a quotation's marker -> the snippet's name
+    std::set<int> ends;                   // the lines of the quotations' end markers
+    int figure = 0, motion = 0;
+    std::map<int, std::size_t> values_done;
+    std::string where(int line) const { return file + ":" + std::to_string(line); }
+    std::string line_text(int line) const {
+        return line >= 1 && static_cast<std::size_t>(line) <= tree.lines.size()
+                   ? tree.lines[static_cast<std::size_t>(line) - 1]
+                   : "";
+    }
 };
 
 class Book {
@@ -119,7 +122,11 @@ public:
 private:
     std::string page_for(const fs::path& target);  // "" when not a page (yet)
     std::string map_link(const Page& page, const std::string& url, std::vector<std::string>& problems);
-    std::string preprocess(const Page& page);
+    std::string page_document(const Page& page);
+    void nodes(md::Json& list, PageWork& w);
+    void contents(md::Json& c, PageWork& w);
+    void raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w);
+    bool inline_marker(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w);
     std::string figure_html(const Page& page, const Image& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
     std::string hand_value_html(const prose::ValueMarker& v, const prose::Json* report);
@@ -374,35 +381,121 @@ std::string Book::snippet_source(const Page& page, const std::string& name, cons
            "\"><code>" + html_escape(s->second.file) + "</code></a></p>\n\n";
 }
 
-std::string Book::preprocess(const Page& page) {
+// The page as pandoc's tree (its JSON), with the book's markers done: a quotation's markers become
+// a link to the snippet's source, a value marker and its text the value, a number tag nothing (it
+// is for the check of numbers), a motion marker the viewer, a paragraph that is one image a
+// numbered figure. Everything else is the tree pandoc read from the Markdown (markdown.hpp).
+std::string Book::page_document(const Page& page) {
     auto lines = prose::read_lines(page.source);
     page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
-    const PagePlan plan = plan_page(lines, out_ / ".work" / (page.file + ".source.md"));
-    std::string md;
-    int figure = 0, motion = 0;
-    const std::string where0 = rel(page.source, root_);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        const int at = static_cast<int>(i) + 1;
-        const std::string where = where0 + ":" + std::to_string(at);
-        if (plan.snippets.count(at)) {
-            md += snippet_source(page, plan.snippets.at(at), where);
-        } else if (plan.skip.count(at)) {
-            continue;
-        } else if (plan.motions.count(at)) {
-            const auto next = plan.images.find(at + 1);
-            md += motion_block(page, next == plan.images.end() ? nullptr : &next->second, plan.motions.at(at), ++motion,
-                               where);
-            i += next == plan.images.end() ? 0 : 1;
-        } else if (plan.images.count(at)) {
-            md += figure_html(page, plan.images.at(at), ++figure);
-        } else if (plan.comments.count(at)) {
-            md += numbers_html(lines[i], where) + "\n";
-        } else {
-            md += lines[i] + "\n";
-        }
+    std::string text;
+    for (const auto& l : lines) text += l + "\n";
+    const fs::path scratch = out_ / ".work" / (page.file + ".source.md");
+    prose::write_text(scratch, text);
+    const md::Page tree = md::read_page(scratch, pandoc_);
+    PageWork w{page, tree, rel(page.source, root_), {}, {}, 0, 0, {}};
+    for (const auto& q : md::quotations(tree)) {
+        w.snippets[q.line] = q.name;
+        if (q.end_line) w.ends.insert(q.end_line);
     }
-    return md;
+    md::Json blocks = tree.blocks;
+    nodes(blocks, w);
+    strip_lines(blocks);
+    return md::Json{{"pandoc-api-version", tree.api_version}, {"meta", md::Json::object()}, {"blocks", blocks}}.dump();
+}
+
+// A list of blocks or inlines, done in place (see page_document), with every node's contents.
+void Book::nodes(md::Json& list, PageWork& w) {
+    md::Json out = md::Json::array();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        md::Json& n = list[i];
+        if (md::is(n, "RawBlock")) {
+            raw_block(list, i, out, w);
+            continue;
+        }
+        if (md::is(n, "RawInline") && inline_marker(list, i, out, w)) continue;
+        if (const auto image = figure_of(n, w.tree.lines)) {
+            out.push_back(raw_html_node("RawBlock", figure_html(w.page, *image, ++w.figure)));
+            continue;
+        }
+        if (n.contains("c")) contents(n["c"], w);
+        out.push_back(std::move(n));
+    }
+    list = std::move(out);
+}
+
+// A node's contents: a list of nodes, or a tuple (a header's level, attributes and inlines; a
+// table's parts) whose lists of nodes are somewhere inside.
+void Book::contents(md::Json& c, PageWork& w) {
+    if (is_node_list(c)) return nodes(c, w);
+    if (c.is_object() && c.contains("t") && c.contains("c")) return contents(c["c"], w);
+    if (c.is_array())
+        for (auto& part : c) contents(part, w);
+}
+
+// A block of raw HTML: a quotation's marker (a link to the snippet's source; its end marker goes),
+// a motion marker (the viewer, with the figure on the next line as its still picture), or other
+// HTML, with the number tags and value markers of its lines done on its text. A line that starts
+// with a value marker or a number tag is a problem: CommonMark (GitHub too) reads it as raw HTML.
+void Book::raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w) {
+    static const std::regex motion(R"(^<!-- motion: (\S+) -->\s*$)");  // the marker's own grammar
+    const int at = md::line(list[i]);
+    const std::string html = md::raw_html(list[i]);
+    std::smatch m;
+    if (w.snippets.count(at) && html.rfind("<!-- snippet:", 0) == 0) {
+        out.push_back(raw_html_node("RawBlock", snippet_source(w.page, w.snippets.at(at), w.where(at))));
+    } else if (w.ends.count(at)) {
+        return;
+    } else if (std::regex_match(html, m, motion)) {
+        std::optional<Image> still;
+        if (i + 1 < list.size() && md::line(list[i + 1]) == at + 1) still = figure_of(list[i + 1], w.tree.lines);
+        if (still) ++i;
+        const std::string viewer = motion_block(w.page, still ? &*still : nullptr, m[1], ++w.motion, w.where(at));
+        if (!viewer.empty()) out.push_back(raw_html_node("RawBlock", viewer));
+    } else if (html.find("<!--") == std::string::npos) {
+        out.push_back(list[i]);
+    } else {
+        if (md::starts_with_inline_marker(html))
+            problems_.push_back(w.where(at) +
+                                ": starts with a value marker or a number tag: CommonMark (GitHub, "
+                                "pandoc) takes the whole line for raw HTML; move a word in front of it");
+        std::istringstream in(html);
+        std::string done;
+        int k = at;
+        for (std::string l; std::getline(in, l); ++k) done += numbers_html(l, w.where(k)) + "\n";
+        out.push_back(raw_html_node("RawBlock", done));
+    }
+}
+
+// An HTML comment inside a paragraph: a number tag goes; a value marker, its text and its end
+// marker become the value (the marker read from its source line, prose.hpp's grammar). Returns
+// false for any other comment, which stays.
+bool Book::inline_marker(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w) {
+    const std::string html = md::raw_html(list[i]);
+    const int at = md::line(list[i]);
+    if (html.rfind("<!-- value:", 0) != 0) {
+        const auto tags = prose::find_number_tags(html);
+        return tags.size() == 1 && tags[0].begin == 0 && tags[0].end == html.size();
+    }
+    std::size_t end = i + 1;
+    while (end < list.size() && md::raw_html(list[end]).rfind("<!-- end value -->", 0) != 0) ++end;
+    const auto markers = prose::find_value_markers(w.line_text(at));
+    std::size_t& k = w.values_done[at];
+    if (end == list.size() || k >= markers.size()) {
+        problems_.push_back(w.where(at) + ": a value marker without its '<!-- end value -->' on the same line");
+        return false;
+    }
+    const prose::ValueMarker& v = markers[k++];
+    try {
+        if (!v.error.empty()) throw std::runtime_error(v.error);
+        out.push_back(raw_html_node("RawInline", value_html(v)));
+        i = end;
+    } catch (const std::exception& e) {
+        problems_.push_back(w.where(at) + ": value '" + v.path + "': " + e.what());
+        return false;
+    }
+    return true;
 }
 
 // One line of prose with its numbers as the reader sees them: each value marker replaced by its
@@ -560,9 +653,9 @@ std::vector<std::string> Book::pandoc_command(const Page& page, const fs::path& 
 }
 
 void Book::render_markdown(const Page& page, const Page* prev, const Page* next) {
-    const fs::path tmp = out_ / ".work" / (page.file + ".md");
-    prose::write_text(tmp, preprocess(page));
-    std::vector<std::string> cmd = pandoc_command(page, tmp, out_ / ".work" / page.file, "gfm+tex_math_dollars+smart");
+    const fs::path tmp = out_ / ".work" / (page.file + ".json");
+    prose::write_text(tmp, page_document(page));
+    std::vector<std::string> cmd = pandoc_command(page, tmp, out_ / ".work" / page.file, "json");
     auto nav = [&](const std::string& name, const Page* p) {
         if (p)
             cmd.insert(cmd.end() - 1, {"--variable=" + name + "-url:" + up_to_root(page.file) + p->file,
