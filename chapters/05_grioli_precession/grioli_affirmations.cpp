@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
+#include "heavy_body.hpp"
 #include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -81,12 +81,12 @@ Staude staude_rotation(const Mat3& J, const Vec3& z0, double f) {
 std::string yesno(bool b) { return b ? "yes" : "no"; }
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
     int restarts = 6;
 };
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body).integer("restarts", &p.restarts, "random starts per search", 1, 200);
+    kit::heavy_body_options(opts, p.body).integer("restarts", &p.restarts, "random starts per search", 1, 200);
 }
 
 // What the five checks share: the body, its counter-clockwise precession, and the lab of the
@@ -103,7 +103,7 @@ struct Setup {
 };
 
 Setup setup(const kit::Options& o, const Params& p) {
-    const rigid::Moments m = ch5::moments(p.body.moments, 1e3);
+    const rigid::Moments m = kit::grioli_moments(p.body.moments, 1e3);
     // The work: the simplex searches (`restarts` runs each) and a few short integrations.
     kit::require_budget(o, {12.0 * p.restarts, 0.03, "simplex runs", "--restarts"});
     const Vec3 moments(m.A, m.B, m.C);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
 #include "scene.hpp"
@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
         const std::size_t cases = extreme_cases().size();
         kit::require_budget(
             o, {double(cases) * periods,
-                ch5::seconds_per_period("rk8pd", 1e-12) + kit::monodromy_seconds(kit::monodromy_tol) / periods,
+                kit::seconds_per_period("rk8pd", 1e-12) + kit::monodromy_seconds(kit::monodromy_tol) / periods,
                 "periods (" + std::to_string(cases) + " cases)", "--periods"});
         report(scene, periods, compute(periods));
     });

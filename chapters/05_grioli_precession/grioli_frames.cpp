@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
 #include "figure.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "scene.hpp"
@@ -30,7 +30,7 @@ using std::numbers::pi;
 namespace {
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
 };
 
 // The body at one instant, in the lab: its inertia axes (columns R_A, R_B, R_C) and the unit
@@ -74,7 +74,7 @@ struct Result {
 };
 
 Result compute(const Params& prm) {
-    Result r{ch5::moments(prm.body.moments), prm.body.f, {}, 0};
+    Result r{kit::grioli_moments(prm.body.moments), prm.body.f, {}, 0};
     r.run_time = kit::min_time([&] { r.fr = frames(r.m, r.f); });
     return r;
 }
@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
     Params p;
     kit::Options opts("grioli_frames",
                       "Chapter 5: the paper's Figures 2 and 3, one Grioli precession at t = -T/4 and t = 0");
-    ch5::moment_options(opts, p.body);
+    kit::heavy_body_options(opts, p.body);
     return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
         const Result r = compute(p);
         report(scene, r);

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
 #include "figure.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
@@ -42,7 +42,7 @@ std::vector<std::vector<double>> ellipse(const Vec3& u, double ru, const Vec3& v
 }
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
 };
 
 struct Placement {
@@ -53,7 +53,7 @@ struct Placement {
 };
 
 Placement compute(const Params& prm) {
-    Placement r{ch5::moments(prm.body.moments, 1e3), prm.body.f, {}, 0};
+    Placement r{kit::grioli_moments(prm.body.moments, 1e3), prm.body.f, {}, 0};
     r.run_time =
         kit::min_time([&] { r.p = rigid::place_item_II(r.m, r.f, rigid::Sense::ccw, Vec3::UnitZ(), Vec3::UnitX()); });
     return r;
@@ -149,7 +149,7 @@ void draw(kit::Scene& scene, const Placement& r) {
 int main(int argc, char** argv) {
     Params p;
     kit::Options opts("grioli_initial_position", "Chapter 5: the initial position of Item II (the paper's Figure 1)");
-    ch5::moment_options(opts, p.body);
+    kit::heavy_body_options(opts, p.body);
     return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
         const Placement r = compute(p);
         report(scene, r);

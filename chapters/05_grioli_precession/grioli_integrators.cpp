@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
 #include "figure.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
 #include "scene.hpp"
@@ -20,14 +20,14 @@
 namespace {
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
     std::string sense = "ccw";
     long periods = 100;
     int repeats = 3;
 };
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body)
+    kit::heavy_body_options(opts, p.body)
         .choice("sense", &p.sense, {"ccw", "cw"}, "sense of the precession")
         .integer("periods", &p.periods, "periods to integrate", 1, 10000)
         .integer("repeats", &p.repeats, "timing: the smallest of this many runs (runs over 0.05 s: one)", 1, 20);
@@ -42,7 +42,7 @@ void check_budget(const kit::Options& o, const Params& p) {
     double per_period = 0;  // every run of the table, `repeats` times when short
     for (const std::string& method : methods)
         for (double tol : tols)
-            if (!left_out(method, tol)) per_period += ch5::seconds_per_period(method, tol);
+            if (!left_out(method, tol)) per_period += kit::seconds_per_period(method, tol);
     kit::require_budget(
         o, {double(p.periods) * p.repeats, per_period, "periods (every method and tolerance)", "--periods, --repeats"});
 }
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
                       "Chapter 5: rotation error against run time over 100 periods, for GSL's integrators");
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments m = ch5::moments(p.body.moments);
+        const rigid::Moments m = kit::grioli_moments(p.body.moments);
         const rigid::Sense sense = p.sense == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
         const rigid::GrioliPrecession g = rigid::grioli_precession(m, p.body.f, sense);
         check_budget(o, p);

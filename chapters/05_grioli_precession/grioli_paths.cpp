@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
 #include "figure.hpp"
+#include "heavy_body.hpp"
 #include "motion.hpp"
 #include "precession.hpp"
 #include "rigid/grioli.hpp"
@@ -70,13 +70,13 @@ std::vector<std::vector<double>> rows(const std::vector<Vec3>& v) {
 }
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
     int samples = 240;
     std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body)
+    kit::heavy_body_options(opts, p.body)
         .integer("samples", &p.samples, "points per period", 16, 100000)
         .file("motion", &p.motion_file, kit::motion_help);
 }
@@ -89,7 +89,7 @@ struct Both {
 };
 
 Both compute(const kit::Options& o, const Params& prm) {
-    const rigid::Moments m = ch5::moments(prm.body.moments);
+    const rigid::Moments m = kit::grioli_moments(prm.body.moments);
     const double f = prm.body.f;
     // Three timed runs of both senses and one more for the stability's steps (report_stability),
     // about 2e-6 s an output point, and the monodromy matrix counted in the same units.
@@ -112,7 +112,7 @@ Both compute(const kit::Options& o, const Params& prm) {
 // and that the error is not the instability's. The steps are those of the same integration (Item
 // II's body in its inertia frame, rk8pd at 1e-12, the same output times), run once more.
 void report_stability(kit::Scene& scene, const Params& prm, double err) {
-    const rigid::Moments m = ch5::moments(prm.body.moments);
+    const rigid::Moments m = kit::grioli_moments(prm.body.moments);
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, prm.body.f, rigid::Sense::ccw);
     const rigid::PrecessionCheck c = rigid::integrate_grioli(
         m, g, 1, prm.samples, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12 * std::min(1.0, g.alpha)});
@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
         const Both r = compute(o, p);
         const double err = report(scene, r);
         report_stability(scene, p, err);
-        write_two_motions(scene, p.motion_file, ch5::moments(p.body.moments), p.body.f, err);
+        write_two_motions(scene, p.motion_file, kit::grioli_moments(p.body.moments), p.body.f, err);
         draw(scene, r);
     });
 }

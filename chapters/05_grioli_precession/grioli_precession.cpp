@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 
-#include "common.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -29,7 +29,7 @@ using rigid::Vec3;
 namespace {
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
     std::string sense = "ccw";
     long periods = 100;
     int samples = 16;
@@ -59,7 +59,7 @@ constexpr int taylor_degree = 16;
 constexpr double taylor_steps_per_period = 32;
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body)
+    kit::heavy_body_options(opts, p.body)
         .choice("sense", &p.sense, {"ccw", "cw"}, "counter-clockwise or clockwise precession (Theorem 1)")
         .integer("periods", &p.periods, "periods 2 pi / alpha to integrate", 1, 100000)
         .integer("samples", &p.samples, "comparisons per period", 1, 10000)
@@ -76,7 +76,7 @@ void check_budget(const kit::Options& o, const Params& p) {
     const std::string method = method_of(p);
     // The Taylor step: about 12 degree^2 multiply-adds, measured 3.5 us at degree 16, doubled.
     const double per_period =
-        method == "taylor" ? taylor_steps_per_period * 7e-6 : ch5::seconds_per_period(method, p.tol);
+        method == "taylor" ? taylor_steps_per_period * 7e-6 : kit::seconds_per_period(method, p.tol);
     kit::require_budget(o, {double(p.periods) * (p.periods <= 1000 ? 3 : 1), per_period + double(p.samples) * 2e-6,
                             "periods", "--periods, --samples, --method, --tol"});
 }
@@ -124,7 +124,7 @@ rigid::PrecessionCheck integrate_grioli_taylor(const rigid::Moments& m, const ri
 // snippet: ch05_contract
 // The precession of the options, built from A < B < C and f, integrated for `periods` periods.
 Integration integrate(const Params& p) {
-    const rigid::Moments m = ch5::moments(p.body.moments);
+    const rigid::Moments m = kit::grioli_moments(p.body.moments);
     const rigid::Sense sense = p.sense == "ccw" ? rigid::Sense::ccw : rigid::Sense::cw;
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, p.body.f, sense);
     const std::string method = method_of(p);

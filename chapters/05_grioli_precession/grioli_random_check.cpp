@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
         // The work per set: a few random starts of the independent solve (about 3 on average; the
         // watchdog stops a run whose sets all need `tries`) and 2 periods of rk8pd.
         kit::require_budget(o,
-                            {double(p.sets), 3 * 6e-3 + 2 * ch5::seconds_per_period("rk8pd", 1e-12), "sets", "--sets"});
+                            {double(p.sets), 3 * 6e-3 + 2 * kit::seconds_per_period("rk8pd", 1e-12), "sets", "--sets"});
         const auto t0 = std::chrono::steady_clock::now();
         const Worst worst = compute(p);
         const double run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "common.hpp"
+#include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
@@ -67,8 +67,8 @@ struct Setup {
     double alpha;
 };
 
-Setup setup(const ch5::Body& body) {
-    const rigid::Moments m = ch5::moments(body.moments, 1e3);
+Setup setup(const kit::HeavyBody& body) {
+    const rigid::Moments m = kit::grioli_moments(body.moments, 1e3);
     const Vec3 I(m.A, m.B, m.C);
     const rigid::GrioliPrecession g = rigid::grioli_precession(m, body.f, rigid::Sense::ccw);
     return {m, body.f, I, I.asDiagonal(), g, g.alpha};
@@ -160,9 +160,9 @@ double case_2(kit::Report& report, const Setup& u) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    ch5::Body body;
+    kit::HeavyBody body;
     kit::Options opts("lemma2_checks", "Chapter 5: (4.2)-(4.15) checked line by line, and case (2) against case (1)");
-    ch5::moment_options(opts, body);
+    kit::heavy_body_options(opts, body);
     return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
         const Setup u = setup(body);
         const auto t0 = std::chrono::steady_clock::now();

@@ -27,8 +27,8 @@
 #include <numbers>
 #include <string>
 
-#include "../05_grioli_precession/common.hpp"
 #include "common.hpp"
+#include "heavy_body.hpp"
 #include "motion.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -86,9 +86,9 @@ void check(const kit::Options& o, const Params& p) {
             "--L: got " + std::to_string(p.L) + ", " + std::to_string(p.L / size) +
             " body sizes; it must be from 1e-6 to 1e8 body sizes sqrt(C_g / mu) = " + std::to_string(size));
     if (p.line == 0) throw kit::BadInput("--line: got 0; it must be +1 or -1");
-    // The work: about ch5::seconds_per_period per period, three timed runs when they are short.
+    // The work: about kit::seconds_per_period per period, three timed runs when they are short.
     kit::require_budget(
-        o, {3.0 * double(p.periods), ch5::seconds_per_period("rk8pd", p.tol), "periods of rk8pd", "--periods, --tol"});
+        o, {3.0 * double(p.periods), kit::seconds_per_period("rk8pd", p.tol), "periods of rk8pd", "--periods, --tol"});
 }
 
 // The body hung on the line, Theorem 1's precession for it, and its own equations of motion.

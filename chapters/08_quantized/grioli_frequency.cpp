@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "../05_grioli_precession/common.hpp"
 #include "figure.hpp"
+#include "heavy_body.hpp"
 #include "precession.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -51,13 +51,13 @@ double off_frequency_deviation(const rigid::Moments& m, double f, double lambda,
 // end snippet
 
 struct Params {
-    ch5::Body body;
+    kit::HeavyBody body;
     int grid = 200;
     int repeats = 3;
 };
 
 void declare(kit::Options& opts, Params& p) {
-    ch5::moment_options(opts, p.body)
+    kit::heavy_body_options(opts, p.body)
         .integer("grid", &p.grid, "map resolution: grid points per side", 20, 2000)
         .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
 }
@@ -231,7 +231,7 @@ int main(int argc, char** argv) {
     kit::Options opts("grioli_frequency", "Chapter 8: the Grioli frequency, fixed by the body and f, with two senses");
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
-        const rigid::Moments body = ch5::moments(p.body.moments);
+        const rigid::Moments body = kit::grioli_moments(p.body.moments);
         const double f = p.body.f;
         // The work: the map (grid^2 closed forms) and 15 bodies x 2 senses x 2 periods, `repeats` times.
         kit::require_budget(

@@ -1,5 +1,8 @@
-// What the Chapter 5 scenes share: the principal moments at O and f, named as in [P], and the
-// work of integrating a Grioli precession.
+// The heavy body of a Grioli precession, shared by the scenes of Chapters 5, 6 and 8: its moments
+// at O checked into rigid::Moments (the body's options --A --B --C --f are kit::HeavyBody's, in
+// body.hpp), and what one period of a Grioli precession costs to integrate with a GSL method.
+//
+// Header-only: a scene that includes it links the grioli topic (rigid/grioli.hpp).
 #pragma once
 
 #include <cmath>
@@ -11,32 +14,26 @@
 #include "rigid/grioli.hpp"
 #include "scene.hpp"
 
-namespace ch5 {
-
-// The body of Chapter 5 (and of Chapter 8's grioli_frequency): the moments at O, --A --B --C,
-// and f = g L mu, --f, each in [1e-6, 1e6]; the rules between the moments (A < B < C,
-// A + B >= C) are checked by moments().
-using Body = kit::HeavyBody;
-inline kit::Options& moment_options(kit::Options& opts, Body& b) { return kit::heavy_body_options(opts, b); }
+namespace kit {
 
 // The moments of --A --B --C. A scene that forms J Omega itself (the residual E - f T of a
 // trial precession, or Euler's equations in a frame where J is not diagonal) loses about
 // eps C / A of its digits there (B Omega_B Omega_C - C Omega_C Omega_B cancels when B and C are
 // close and A is small); it passes the largest C / A for which its checks still hold.
 // rigid::moments' own message is passed on, prefixed by the options it concerns.
-inline rigid::Moments moments(const kit::MomentsAtO& given,
-                              double max_C_over_A = std::numeric_limits<double>::infinity()) {
-    kit::require_moments(given);
+inline rigid::Moments grioli_moments(const MomentsAtO& given,
+                                     double max_C_over_A = std::numeric_limits<double>::infinity()) {
+    require_moments(given);
     rigid::Moments m{};
     try {
         m = rigid::moments(given.A, given.B, given.C);  // the exact rule C - B <= A, on the gaps
     } catch (const std::invalid_argument& e) {
-        throw kit::BadInput(std::string("--A, --B, --C: ") + e.what());
+        throw BadInput(std::string("--A, --B, --C: ") + e.what());
     }
     if (!(m.C <= max_C_over_A * m.A))
-        throw kit::BadInput("--A, --C: C / A = " + std::to_string(m.C / m.A) +
-                            "; this scene forms J Omega and needs C / A <= " + std::to_string(max_C_over_A) +
-                            " (beyond, the round-off eps C / A of its residuals passes its thresholds)");
+        throw BadInput("--A, --C: C / A = " + std::to_string(m.C / m.A) +
+                       "; this scene forms J Omega and needs C / A <= " + std::to_string(max_C_over_A) +
+                       " (beyond, the round-off eps C / A of its residuals passes its thresholds)");
     return m;
 }
 
@@ -57,4 +54,4 @@ inline double seconds_per_period(const std::string& method, double tol) {
     return 1e-3 * std::pow(tol, -0.5);  // an unknown method: assume the worst
 }
 
-}  // namespace ch5
+}  // namespace kit
