@@ -81,35 +81,38 @@ JacobiElliptic jacobi_elliptic(double u, double m, double m_c) {
     return {sn, cn, std::sqrt(cn * cn + m_c * sn * sn)};
 }
 
-FreeBodyMotion free_body_motion(const Vec3& I, const Vec3& Omega0) {
-    require_principal_moments(I);
-    if (!Omega0.allFinite())
-        throw std::invalid_argument("initial angular velocity Omega0 must be finite, got " + describe(Omega0));
-    using LD = long double;
-    FreeBodyMotion mo;
-    mo.I = I;
-    mo.Omega0 = Omega0;
+namespace {
+
+using LD = long double;
+
+LD squared(const Vec3& v, int j) { return LD(v(j)) * LD(v(j)); }
+
+// E and M^2, summed in long double.
+void set_invariants(FreeBodyMotion& mo) {
     LD two_e = 0, m2 = 0;
     for (int j = 0; j < 3; ++j) {
-        two_e += LD(I(j)) * LD(Omega0(j)) * LD(Omega0(j));
-        m2 += LD(I(j)) * LD(I(j)) * LD(Omega0(j)) * LD(Omega0(j));
+        const LD I = mo.I(j), Omega = mo.Omega0(j);
+        two_e += I * Omega * Omega;
+        m2 += I * I * Omega * Omega;
     }
     mo.energy = double(two_e / 2);
     mo.momentum_squared = double(m2);
-    const auto steady = [&mo] {
-        mo.steady = true;
-        mo.period = 0;
-        return mo;
-    };
+}
+
+// The axes p (the one Omega circulates about), q (the middle one) and s, and delta =
+// M^2 - 2E I_q, the distance from the separatrix. False when the motion is a steady rotation (at
+// rest, a spherical body, or about the middle axis).
+bool choose_axes(FreeBodyMotion& mo, LD& delta) {
+    const Vec3& I = mo.I;
     std::array<int, 3> order{0, 1, 2};
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return I(x) < I(y); });
     const int lo = order[0], mid = order[1], hi = order[2];
-    if (Omega0.isZero(0) || I(lo) == I(hi)) return steady();
+    if (mo.Omega0.isZero(0) || I(lo) == I(hi)) return false;
 
     const auto Il = [&](int j) { return LD(I(j)); };
-    const auto w = [&](int j) { return LD(Omega0(j)) * LD(Omega0(j)); };
+    const auto w = [&](int j) { return squared(mo.Omega0, j); };
     // M^2 - 2 E I_mid: the distance from the separatrix, the one difference that cannot be avoided.
-    const LD delta = Il(lo) * (Il(lo) - Il(mid)) * w(lo) + Il(hi) * (Il(hi) - Il(mid)) * w(hi);
+    delta = Il(lo) * (Il(lo) - Il(mid)) * w(lo) + Il(hi) * (Il(hi) - Il(mid)) * w(hi);
     int p, s;
     if (I(mid) == I(hi))
         p = hi, s = lo;  // prolate symmetric: circulation about the odd axis
@@ -119,17 +122,22 @@ FreeBodyMotion free_body_motion(const Vec3& I, const Vec3& Omega0) {
         p = lo, s = hi;  // about the largest axis (and the separatrix)
     else
         p = hi, s = lo;  // about the smallest axis
-    const int q = mid;
-    mo.p = p, mo.q = q, mo.s = s;
-    if (Omega0(p) == 0 && Omega0(s) == 0) return steady();  // along the middle axis
+    mo.p = p, mo.q = mid, mo.s = s;
+    return !(mo.Omega0(p) == 0 && mo.Omega0(s) == 0);  // along the middle axis
+}
 
+// The amplitudes (with their signs), lambda, m and m_c; P1 = |2E I_s - M^2| for the phase. False
+// when the motion is a steady rotation (along the p axis, or in the plane of two equal moments).
+bool set_elliptic_constants(FreeBodyMotion& mo, LD delta, LD& P1) {
+    const int p = mo.p, q = mo.q, s = mo.s;
+    const auto Il = [&](int j) { return LD(mo.I(j)); };
+    const auto w = [&](int j) { return squared(mo.Omega0, j); };
     const LD dsp = std::fabs(Il(s) - Il(p)), dsq = std::fabs(Il(s) - Il(q)), dqp = std::fabs(Il(q) - Il(p));
-    const LD P1 =
-        std::fabs(Il(p) * (Il(s) - Il(p)) * w(p)) + std::fabs(Il(q) * (Il(s) - Il(q)) * w(q));  // |2E I_s - M^2|
+    P1 = std::fabs(Il(p) * (Il(s) - Il(p)) * w(p)) + std::fabs(Il(q) * (Il(s) - Il(q)) * w(q));  // |2E I_s - M^2|
     const LD P2 =
         std::fabs(Il(q) * (Il(q) - Il(p)) * w(q)) + std::fabs(Il(s) * (Il(s) - Il(p)) * w(s));  // |M^2 - 2E I_p|
     const LD P3 = std::fabs(delta);                                                             // |M^2 - 2E I_q|
-    if (P2 == 0) return steady();  // along the p axis, or in the plane of two equal moments
+    if (P2 == 0) return false;
 
     const LD Ap = std::sqrt(P1 / (Il(p) * dsp)), Aq = std::sqrt(P1 / (Il(q) * dsq)), As = std::sqrt(P2 / (Il(s) * dsp));
     mo.lambda = double(std::sqrt(dsq * P2 / (Il(p) * Il(q) * Il(s))));
@@ -137,21 +145,44 @@ FreeBodyMotion free_body_motion(const Vec3& I, const Vec3& Omega0) {
     mo.m_c = double(dsp * P3 / (dsq * P2));
 
     // Signs: sigma_p sigma_q sigma_s = parity(p, q, s) * sign(I_s - I_q), from Euler's equations.
-    const double sp = Omega0(p) < 0 ? -1 : 1, ss = Omega0(s) < 0 ? -1 : 1;
+    const double sp = mo.Omega0(p) < 0 ? -1 : 1, ss = mo.Omega0(s) < 0 ? -1 : 1;
     const double parity = (q == (p + 1) % 3) ? 1 : -1;
-    const double sq = parity * (I(s) > I(q) ? 1 : -1) * sp * ss;
+    const double sq = parity * (mo.I(s) > mo.I(q) ? 1 : -1) * sp * ss;
     mo.amplitude(p) = sp * double(Ap);
     mo.amplitude(q) = sq * double(Aq);
     mo.amplitude(s) = ss * double(As);
+    return true;
+}
 
+// The phase u0 and the period.
+void set_phase_and_period(FreeBodyMotion& mo, LD P1) {
     // u0 = F(phi0 | m) with sin(phi0) = sn(u0), cos(phi0) = cn(u0) >= 0:
     // F = sin(phi) R_F(cos^2 phi, cos^2 phi + m_c sin^2 phi, 1), free of 1 - m.
     if (P1 > 0) {
-        const double sn0 = Omega0(q) / mo.amplitude(q), cn0 = Omega0(p) / mo.amplitude(p);
+        const double sn0 = mo.Omega0(mo.q) / mo.amplitude(mo.q), cn0 = mo.Omega0(mo.p) / mo.amplitude(mo.p);
         const double r = std::hypot(sn0, cn0), sphi = sn0 / r, cphi = cn0 / r;
         mo.u0 = sphi * carlson_rf(cphi * cphi, cphi * cphi + mo.m_c * sphi * sphi, 1.0);
     }
     mo.period = mo.m_c > 0 ? 4 * carlson_rf(0.0, mo.m_c, 1.0) / mo.lambda : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+FreeBodyMotion free_body_motion(const Vec3& I, const Vec3& Omega0) {
+    require_principal_moments(I);
+    if (!Omega0.allFinite())
+        throw std::invalid_argument("initial angular velocity Omega0 must be finite, got " + describe(Omega0));
+    FreeBodyMotion mo;
+    mo.I = I;
+    mo.Omega0 = Omega0;
+    set_invariants(mo);
+    LD delta = 0, P1 = 0;
+    if (!choose_axes(mo, delta) || !set_elliptic_constants(mo, delta, P1)) {
+        mo.steady = true;
+        mo.period = 0;
+        return mo;
+    }
+    set_phase_and_period(mo, P1);
     return mo;
 }
 
