@@ -107,11 +107,12 @@ endfunction()
 #   exercises/rigid/           the student's API: one header per topic, what they implement
 #   exercises/provided/rigid/  the code given to them: vocabulary types, input checks, todo(),
 #                              the GSL wrapper, the stepping driver, the Taylor and exact references
-# and, for tests and scenes only, solutions/reference/ ("reference/<name>.hpp"): the independent
-# computations the graders and the scenes both check the exercises against.
+# and, for the graders and the scenes only, tests/reference/ ("reference/<name>.hpp"): the
+# independent computations both check the exercises against, the graders' yardstick, beside them
+# and outside what a student's compile sees (the grading run gives it exercises/ only).
 set(WORKBOOK_API_INCLUDES "${WORKBOOK_ROOT}/exercises" "${WORKBOOK_ROOT}/exercises/provided")
 add_library(workbook_reference INTERFACE)
-target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/solutions")
+target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/tests")
 
 # ------------------------------------------------------------------------------------------
 # One API topic: exercises/rigid/<name>.hpp, with solutions/<name>.cpp, exercises/<name>.cpp and

@@ -96,7 +96,7 @@ std::string compile_template(const std::string& compile_commands, const std::str
 std::string hash_instructor_files(const std::string& root) {
     std::string all;
     for (const char* folder : {"tests", "tests/grading", "tests/grading/remote", "exercises/rigid",
-                               "exercises/provided/rigid", "solutions", "solutions/reference"}) {
+                               "exercises/provided/rigid", "solutions", "tests/reference"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
