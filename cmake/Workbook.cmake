@@ -363,21 +363,37 @@ endfunction()
 # A case a scene must serve: input inside its documented ranges (often where it once failed its
 # own check), run with --json --no-figure. It must exit 0, and each EXPECT key of its JSON report
 # (a.b for a nested one; a boolean reads ON or OFF) must match its regex (key=regex; no '|' in
-# it), or be at most a number (key<=number). A corner test, named "corner: <scene> <label>", like
-# the corner sweep's.
+# it), or be at most or at least a number (key<=number, key>=number: a range of numbers that a
+# regex would need '|' for). A corner test, named "corner: <scene> <label>", like the corner
+# sweep's; KIND names another kind of case ("stability: <scene> <label>", tests/stability.cmake),
+# labelled LABELS instead of "corner;<chapter>".
 #
-#   workbook_scene_case(<scene> <label> ARGS <arg>... [EXPECT <key>=<regex>|<key><=<number>...])
+#   workbook_scene_case(<scene> <label> [KIND <kind> LABELS <label>...] ARGS <arg>...
+#                       [EXPECT <key>=<regex>|<key><=<number>|<key>>=<number>...])
 function(workbook_scene_case scene label)
-  cmake_parse_arguments(C "" "" "ARGS;EXPECT" ${ARGN})
+  cmake_parse_arguments(C "" "KIND" "ARGS;EXPECT;LABELS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+  set(kind corner)
+  set(labels corner ${chapter})
   set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-case-${label}")
+  if(C_KIND)
+    set(kind "${C_KIND}")
+    set(labels ${C_LABELS})
+    set(out "${CMAKE_BINARY_DIR}/smoke/${kind}/${scene}-${label}")
+  endif()
+  foreach(e IN LISTS C_EXPECT)
+    if(e MATCHES "[|]")
+      message(FATAL_ERROR "workbook_scene_case(${scene} ${label}): '${e}' holds a '|', which separates the "
+                          "keys: bound the number with key<=number and key>=number instead")
+    endif()
+  endforeach()
   string(JOIN "|" args ${C_ARGS})
   string(JOIN "|" keys ${C_EXPECT})
-  add_test(NAME "corner: ${scene} ${label}"
+  add_test(NAME "${kind}: ${scene} ${label}"
            COMMAND ${CMAKE_COMMAND} -DEXPECT=0 -DOUT=${out} "-DKEYS=${keys}"
                    "-DCOMMAND=$<TARGET_FILE:${scene}>|--json|--no-figure|--out|${out}|${args}"
                    -P "${WORKBOOK_ROOT}/cmake/scene_check.cmake")
-  set_tests_properties("corner: ${scene} ${label}" PROPERTIES LABELS "corner;${chapter}" TIMEOUT 300)
+  set_tests_properties("${kind}: ${scene} ${label}" PROPERTIES LABELS "${labels}" TIMEOUT 300)
 endfunction()
 
 # ------------------------------------------------------------------------------------------

@@ -7,7 +7,8 @@
 #   -DFIGURES=ON                for EXPECT=0: the JSON must list figures, and they must exist
 #   -DJSON=<file>               for EXPECT=0: where to keep the JSON report (the book's values)
 #   -DKEYS=<key>=<regex>|...    for EXPECT=0: each key of the JSON report (a.b for a nested one;
-#                               a boolean reads ON or OFF) must match its regex
+#                               a boolean reads ON or OFF) must match its regex, or, written
+#                               <key><=<number> or <key>>=<number>, be a number at most or at least it
 string(REPLACE "|" ";" command "${COMMAND}")
 file(REMOVE_RECURSE "${OUT}")
 if(JSON)
@@ -55,14 +56,27 @@ if(FIGURES)
 endif()
 string(REPLACE "|" ";" keys "${KEYS}")
 foreach(key_regex IN LISTS keys)
-  # key<=number: a numeric upper bound instead of a regex.
-  if(key_regex MATCHES "^([^=<]+)<=(.+)$")
+  # key<=number, key>=number: a numeric bound instead of a regex.
+  if(key_regex MATCHES "^([^=<>]+)([<>])=(.+)$")
     set(key "${CMAKE_MATCH_1}")
-    set(bound "${CMAKE_MATCH_2}")
+    set(bound "${CMAKE_MATCH_3}")
     string(REPLACE "." ";" path "${key}")
     string(JSON value ERROR_VARIABLE json_error GET "${out}" ${path})
-    if(json_error OR NOT value LESS_EQUAL bound)
-      message(FATAL_ERROR "the report's ${key} is '${value}', expected at most ${bound} ${json_error}\n${out}")
+    if(CMAKE_MATCH_2 STREQUAL "<")
+      set(side "at most")
+      set(holds OFF)
+      if(NOT json_error AND value LESS_EQUAL bound)
+        set(holds ON)
+      endif()
+    else()
+      set(side "at least")
+      set(holds OFF)
+      if(NOT json_error AND value GREATER_EQUAL bound)
+        set(holds ON)
+      endif()
+    endif()
+    if(NOT holds)
+      message(FATAL_ERROR "the report's ${key} is '${value}', expected ${side} ${bound} ${json_error}\n${out}")
     endif()
     continue()
   endif()
