@@ -1,4 +1,4 @@
-# The workbook's one gnuplot style, loaded by every figure (chapters/kit/figure.cpp).
+# The workbook's one gnuplot style, at the head of every figure: embedded in the kit (kit::gp::style, chapters/kit/figure.cpp).
 set border lw 1 lc rgb '#444444'
 set grid lw 0.5 lc rgb '#dddddd'
 set key box opaque

@@ -1,18 +1,19 @@
 // Headless figures: see figure.hpp.
 #include "figure.hpp"
 
-#include <gnuplot-iostream.h>
+#include <fmt/format.h>
 
-#include <csignal>
-#include <cstdio>
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
-#include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
-#ifndef WORKBOOK_STYLE_GP
-#define WORKBOOK_STYLE_GP ""
-#endif
+#include "kit.gp.hpp"  // kit::gp::style, from figures/style.gp
+#include "support/file.hpp"
+#include "support/process.hpp"
 
 namespace kit {
 
@@ -20,15 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // gnuplot's complaints that mean "no good figure": errors carry "line N:" without the word
-// warning; a missing program shows up as the shell's "not found".
+// warning.
 bool gnuplot_failed(const std::string& log) {
     std::istringstream in(log);
     std::string line;
@@ -36,12 +30,72 @@ bool gnuplot_failed(const std::string& log) {
     while (std::getline(in, line)) {
         const bool warning = line.find("arning") != std::string::npos;
         if (!warning && std::regex_search(line, error_line)) return true;
-        if (line.find("not found") != std::string::npos) return true;
     }
     return false;
 }
 
+bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The length of the placeholder name that starts at text[at] and is closed by '@', or 0.
+std::size_t placeholder_at(std::string_view text, std::size_t at) {
+    std::size_t end = at;
+    while (end < text.size() && name_char(text[end])) ++end;
+    const bool opens = end > at && !std::isdigit(static_cast<unsigned char>(text[at]));
+    return (opens && end < text.size() && text[end] == '@') ? end - at : 0;
+}
+
+// Whether text[at] starts a comment line: at a line's start, after blanks only, a '#'.
+bool comment_at(std::string_view text, std::size_t at) {
+    if (at > 0 && text[at - 1] != '\n') return false;
+    while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+    return at < text.size() && text[at] == '#';
+}
+
+std::string terminal_for(const std::string& file_name, int width, int height) {
+    const std::string ext = fs::path(file_name).extension().string();
+    const std::string size = std::to_string(width) + "," + std::to_string(height);
+    if (ext == ".svg")
+        return "set terminal svg size " + size + " dynamic enhanced font 'DejaVu Sans,12' background rgb 'white'";
+    if (ext == ".png")
+        return "set terminal pngcairo size " + size + " enhanced font 'DejaVu Sans,11' background rgb 'white'";
+    throw std::logic_error("kit::Figure: '" + file_name + "' must end in .svg or .png");
+}
+
 }  // namespace
+
+std::string filled(const Script& script, const Fill& values) {
+    const std::string_view text = script.text;
+    std::vector<bool> used(values.size(), false);
+    std::string out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (comment_at(text, i)) {  // a comment line may name a placeholder: it stays as it is
+            const std::size_t end = std::min(text.find('\n', i), text.size());
+            out.append(text.substr(i, end - i));
+            i = end;
+            continue;
+        }
+        const std::size_t n = text[i] == '@' ? placeholder_at(text, i + 1) : 0;
+        if (n == 0) {
+            out += text[i++];
+            continue;
+        }
+        const std::string_view name = text.substr(i + 1, n);
+        std::size_t k = 0;
+        while (k < values.size() && values[k].first != name) ++k;
+        if (k == values.size())
+            throw std::logic_error(
+                fmt::format("gnuplot script {}: no value for its placeholder @{}@", script.name, std::string(name)));
+        out += values[k].second;
+        used[k] = true;
+        i += n + 2;
+    }
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (!used[k])
+            throw std::logic_error(fmt::format("gnuplot script {}: a value for @{}@, a placeholder it does not have",
+                                               script.name, values[k].first));
+    return out;
+}
 
 std::string quoted(const std::string& text) {
     std::string out = "'";
@@ -49,93 +103,82 @@ std::string quoted(const std::string& text) {
     return out + "'";
 }
 
-Figure::Figure(Scene& scene, const std::string& file_name, int width, int height) : scene_(scene) {
+Figure::Figure(Scene& scene, const std::string& file_name, int width, int height)
+    : Figure(scene, file_name, Terminal{terminal_for(file_name, width, height)}) {}
+
+Figure::Figure(Scene& scene, const std::string& path, Terminal terminal) : scene_(scene) {
     if (!scene.options().figures()) return;
-    const fs::path dir = scene.options().out_dir();
+    const fs::path final_path =
+        fs::path(path).is_absolute() ? fs::path(path) : fs::path(scene.options().out_dir()) / path;
+    const fs::path dir = final_path.parent_path(), name = final_path.filename();
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir)) throw BadInput("--out: cannot create the folder '" + dir.string() + "'");
-    final_path_ = (dir / file_name).string();
-    staged_path_ = (dir / ("." + file_name + ".partial")).string();
-    log_path_ = (dir / ("." + file_name + ".gnuplot.log")).string();
-    for (const auto& p : {staged_path_, log_path_})
-        if (p.find('\'') != std::string::npos) throw BadInput("--out: the folder name must not contain a quote (')");
-
-    std::string terminal;
-    const std::string ext = fs::path(file_name).extension().string();
-    const std::string size = std::to_string(width) + "," + std::to_string(height);
-    if (ext == ".svg")
-        terminal = "set terminal svg size " + size + " dynamic enhanced font 'DejaVu Sans,12' background rgb 'white'";
-    else if (ext == ".png")
-        terminal = "set terminal pngcairo size " + size + " enhanced font 'DejaVu Sans,11' background rgb 'white'";
-    else
-        throw std::logic_error("kit::Figure: '" + file_name + "' must end in .svg or .png");
-
-    // A gnuplot that died must make our writes fail, not kill the scene with SIGPIPE.
-    std::signal(SIGPIPE, SIG_IGN);
-    fs::remove(staged_path_, ec);
-    gp_ = std::make_unique<gnuplotio::Gnuplot>("gnuplot -d 2>'" + log_path_ + "'");
+    final_path_ = final_path.string();
+    staged_path_ = (dir / ("." + name.string() + ".partial")).string();
+    script_path_ = (dir / ("." + name.string() + ".gp")).string();
+    if (staged_path_.find('\'') != std::string::npos)
+        throw BadInput("--out: the folder name must not contain a quote (')");
+    enabled_ = true;
     // Greek and mathematical signs are written as UTF-8 (Ω, α, ‖·‖), never with gnuplot's
     // escape to the PostScript Symbol font, which a browser shows as Latin letters (W for Ω).
-    *gp_ << terminal << "\n"
-         << "set encoding utf8\n"
-         << "set output " << quoted(staged_path_) << "\n";
-    const std::string style = WORKBOOK_STYLE_GP;
-    if (!style.empty() && fs::exists(style)) *gp_ << "load " << quoted(style) << "\n";
+    text_ = terminal.line + "\nset encoding utf8\nset output " + kit::quoted(staged_path_) + "\n";
+    if (terminal.style) text_ += gp::style.text;
 }
 
-Figure::~Figure() {
-    if (gp_ && !finished_) {
-        // Abandoned (an exception is on its way): close gnuplot quietly, leave nothing behind.
-        try {
-            gp_.reset();
-        } catch (...) {
-        }
-        std::error_code ec;
-        fs::remove(staged_path_, ec);
-        fs::remove(log_path_, ec);
-    }
+Figure& Figure::script(const Script& script, const Fill& values) {
+    if (enabled_) text_ += filled(script, values);
+    return *this;
 }
 
 Figure& Figure::operator<<(const std::string& commands) {
-    if (gp_) *gp_ << commands;
+    if (enabled_) text_ += commands;
     return *this;
 }
 
-// gnuplot-iostream's send1d writes one line per row (every number with 19 significant digits,
-// so gnuplot reads back the very doubles), a blank line for an empty row, and the closing 'e'.
-// A number shown as text (`with labels`) must therefore be formatted by gnuplot itself, e.g.
-// `using 1:2:(sprintf('%d', $3))`.
+// 19 significant digits, as gnuplot-iostream's send1d wrote them: gnuplot reads back the very
+// doubles.
 Figure& Figure::data(const std::vector<std::vector<double>>& rows) {
-    if (gp_) gp_->send1d(rows);
+    if (!enabled_) return *this;
+    for (const auto& row : rows) {
+        for (std::size_t j = 0; j < row.size(); ++j) {
+            if (j) text_ += ' ';
+            fmt::format_to(std::back_inserter(text_), "{:.18e}", row[j]);
+        }
+        text_ += '\n';
+    }
+    text_ += "e\n";
     return *this;
 }
 
-void Figure::finish() {
-    if (!gp_ || finished_) return;
+std::uintmax_t Figure::finish() {
+    if (!enabled_ || finished_) return 0;
     finished_ = true;
-    *gp_ << "unset output\n";
-    gp_->flush();
-    const bool stream_ok = gp_->good();
-    gp_.reset();  // closes the pipe and waits for gnuplot to exit
-    const std::string log = read_file(log_path_);
+    text_ += "unset output\n";
     std::error_code ec;
-    fs::remove(log_path_, ec);
+    fs::remove(staged_path_, ec);
+    if (!support::write_file(script_path_, text_))
+        throw NumericalFailure("figure " + final_path_ + ": cannot write its script " + script_path_);
+    // gnuplot from its argument vector, no shell between (cmake/tools/support/process.hpp).
+    const support::Result r = support::run({"gnuplot", "-d", script_path_});
+    fs::remove(script_path_, ec);
     const auto size = fs::exists(staged_path_) ? fs::file_size(staged_path_) : 0;
     std::string problem;
-    if (!stream_ok)
-        problem = "gnuplot stopped reading its commands";
-    else if (gnuplot_failed(log))
-        problem = "gnuplot reported an error";
+    if (r.status == -1)
+        problem = "gnuplot did not start (" + r.error + ")";
+    else if (r.status != 0 || gnuplot_failed(r.err))
+        problem = "gnuplot reported an error (exit status " + std::to_string(r.status) + ")";
     else if (size == 0)
         problem = "gnuplot wrote no file";
-    else if (fs::path(final_path_).extension() == ".svg" && read_file(staged_path_).find("</svg>") == std::string::npos)
+    else if (fs::path(final_path_).extension() == ".svg" &&
+             support::read_file(staged_path_).find("</svg>") == std::string::npos)
         problem = "the SVG file is truncated";
     if (!problem.empty()) {
         fs::remove(staged_path_, ec);
-        throw NumericalFailure("figure " + final_path_ + ": " + problem + (log.empty() ? "" : ":\n" + log));
+        throw NumericalFailure("figure " + final_path_ + ": " + problem + (r.err.empty() ? "" : ":\n" + r.err));
     }
     scene_.stage_figure(staged_path_, final_path_);
+    return size;
 }
 
 }  // namespace kit

@@ -13,7 +13,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "support/process.hpp"
+#include "figure.hpp"
+#include "kit.gp.hpp"  // kit::gp::motion_gif, motion_gif_frame
 
 namespace kit {
 
@@ -146,7 +147,39 @@ void block(std::ostream& os, const std::vector<Points>& lines, const rigid::Mat3
     os << "e\n";
 }
 
-void write_gif(const std::vector<Motion>& bodies, const fs::path& gif, const fs::path& script) {
+// One frame of the GIF: each body with its outline, axes, k, cones and trails up to sample k,
+// as the splot of motion_gif_frame.gp, each curve in its line style of motion_gif.gp.
+void gif_frame(Figure& fig, const std::vector<Motion>& bodies, std::size_t k) {
+    std::string curves;
+    std::ostringstream data;
+    auto add = [&](int style, const std::vector<Points>& lines, const rigid::Mat3& R, const rigid::Vec3& at) {
+        curves += fmt::format("{}'-' with lines ls {}", curves.empty() ? "" : ", ", style);
+        block(data, lines, R, at);
+    };
+    for (const Motion& b : bodies) {
+        const rigid::Vec3 h = half_axes(b.moments) * b.size, O = b.fixed_point;
+        const rigid::Mat3& R = b.R[k];
+        const rigid::Mat3 I = rigid::Mat3::Identity();
+        add(101, outline(b, h), R, O);
+        const double reach = 1.25 * h.maxCoeff() + b.centre_of_mass.norm();
+        for (int i = 0; i < 3; ++i) add(102 + i, {{-0.8 * reach * I.col(i), reach * I.col(i)}}, R, O);
+        add(105, {{rigid::Vec3::Zero(), 1.9 * b.k.normalized()}}, I, O);
+        for (const auto& c : b.cones) add(c.body_fixed ? 106 : 107, cone_lines(c), c.body_fixed ? R : I, O);
+        Points cm, tip;
+        for (std::size_t j = 0; j <= k; ++j) {
+            if (b.centre_of_mass.norm() > 0) cm.push_back(b.R[j] * b.centre_of_mass);
+            tip.push_back(b.R[j].col(1) * (1.25 * h.maxCoeff()));
+        }
+        add(108, {cm}, I, O);
+        add(109, {tip}, I, O);
+    }
+    fig.script(gp::motion_gif_frame, {{"t", fmt::format("{:.2f}", bodies.front().t[k])}, {"curves", curves}});
+    fig << data.str();
+}
+
+// The GIF of write_motion (through kit::Figure, as every figure): 48 frames at most, played in
+// the motion's own time at its speed, under 2 MB.
+void write_gif(Scene& scene, const std::vector<Motion>& bodies, const fs::path& gif) {
     const Motion& m = bodies.front();
     const std::size_t n = m.t.size(), frames = std::min<std::size_t>(48, n);
     const double seconds = (m.t.back() - m.t.front()) / (m.speed > 0 ? m.speed : 1);
@@ -159,59 +192,17 @@ void write_gif(const std::vector<Motion>& bodies, const fs::path& gif, const fs:
         for (const auto& c : b.cones) hi = hi.cwiseMax(b.fixed_point + rigid::Vec3::Constant(c.length));
     }
     hi.z() = std::max(hi.z(), 2.0);
-    std::ostringstream gp;
-    gp << fmt::format("set terminal gif animate delay {} size 480,360 font 'DejaVu Sans,9'\n", delay) << "set output '"
-       << gif.string() << "'\n"
-       << "set encoding utf8\nunset border\nunset tics\nunset key\nset view 62, 38, 1.9\nset view equal xyz\n"
-       << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset zrange [{}:{}]\n", lo.x(), hi.x(), lo.y(), hi.y(),
-                      lo.z(), hi.z());
-    const char* colours[] = {"#009E73", "#0072B2", "#D55E00"};
-    for (std::size_t f = 0; f < frames; ++f) {
-        const std::size_t k = frames > 1 ? f * (n - 1) / (frames - 1) : 0;
-        std::ostringstream plot, data;
-        plot << "splot ";
-        bool first = true;
-        auto add = [&](const std::string& style, const std::vector<Points>& lines, const rigid::Mat3& R,
-                       const rigid::Vec3& at) {
-            plot << (first ? "" : ", ") << "'-' with lines " << style;
-            first = false;
-            block(data, lines, R, at);
-        };
-        for (const Motion& b : bodies) {
-            const rigid::Vec3 h = half_axes(b.moments) * b.size, O = b.fixed_point;
-            const rigid::Mat3& R = b.R[k];
-            const rigid::Mat3 I = rigid::Mat3::Identity();
-            add("lw 1.2 lc rgb '#777777'", outline(b, h), R, O);
-            const double reach = 1.25 * h.maxCoeff() + b.centre_of_mass.norm();
-            for (int i = 0; i < 3; ++i)
-                add(fmt::format("lw 2 lc rgb '{}'", colours[i]), {{-0.8 * reach * I.col(i), reach * I.col(i)}}, R, O);
-            add("lw 2 lc rgb '#000000'", {{rigid::Vec3::Zero(), 1.9 * b.k.normalized()}}, I, O);
-            for (const auto& c : b.cones)
-                add(c.body_fixed ? "lw 1 lc rgb '#E69F00'" : "lw 1 lc rgb '#999999'", cone_lines(c),
-                    c.body_fixed ? R : I, O);
-            Points cm, tip;
-            for (std::size_t j = 0; j <= k; ++j) {
-                if (b.centre_of_mass.norm() > 0) cm.push_back(b.R[j] * b.centre_of_mass);
-                tip.push_back(b.R[j].col(1) * (1.25 * h.maxCoeff()));
-            }
-            add("lw 1.5 lc rgb '#CC79A7'", {cm}, I, O);
-            add("lw 1.5 lc rgb '#56B4E9'", {tip}, I, O);
-        }
-        gp << fmt::format("set label 1 't = {:.2f}' at screen 0.03, 0.94\n", m.t[k]) << plot.str() << "\n"
-           << data.str();
+    const Terminal terminal{fmt::format("set terminal gif animate delay {} size 480,360 font 'DejaVu Sans,9'", delay),
+                            false};
+    Figure fig(scene, fs::absolute(gif).string(), terminal);  // gif is already in the --out folder
+    Fill range;
+    for (int i = 0; i < 3; ++i) {
+        range.emplace_back(fmt::format("{}min", "xyz"[i]), fmt::format("{}", lo(i)));
+        range.emplace_back(fmt::format("{}max", "xyz"[i]), fmt::format("{}", hi(i)));
     }
-    gp << "unset output\n";
-    std::ofstream(script) << gp.str();
-    // gnuplot from its argument vector, no shell between (cmake/tools/support/process.hpp).
-    const support::Result r = support::run({"gnuplot", "-d", script.string()});
-    std::error_code ec;
-    const auto size = fs::exists(gif) ? fs::file_size(gif) : 0;
-    if (r.status != 0 || size == 0) {
-        const std::string why = r.error + r.err;
-        throw NumericalFailure("--motion: gnuplot did not draw " + gif.string() + " (exit status " +
-                               std::to_string(r.status) + "): " + why.substr(0, 400));
-    }
-    fs::remove(script, ec);
+    fig.script(gp::motion_gif, range);
+    for (std::size_t f = 0; f < frames; ++f) gif_frame(fig, bodies, frames > 1 ? f * (n - 1) / (frames - 1) : 0);
+    const std::uintmax_t size = fig.finish();
     if (size > 2'000'000)
         throw NumericalFailure("--motion: the animated GIF has " + std::to_string(size) +
                                " bytes; it must stay under 2 MB");
@@ -260,9 +251,7 @@ void write_motion(Scene& scene, const std::string& file, const std::vector<Motio
     // Beside it, unless --no-figure: the GIF of the same samples, <name>.gif.
     if (!scene.options().figures()) return;
     const fs::path gif = fs::path(final_path).replace_extension(".gif");
-    const fs::path gif_staged = final_path.parent_path() / fmt::format(".{}.partial", gif.filename().string());
-    write_gif(bodies, gif_staged, final_path.parent_path() / fmt::format(".{}.gp", gif.filename().string()));
-    scene.stage_figure(gif_staged.string(), gif.string());
+    write_gif(scene, bodies, gif);
 }
 
 }  // namespace kit
