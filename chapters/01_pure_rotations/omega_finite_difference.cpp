@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "omega_finite_difference.gp.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
 
@@ -158,15 +159,10 @@ void report(kit::Scene& scene, const Params& p, const Sweep& sw) {
 void draw_error_vs_step(kit::Scene& scene, const Params& p, const Sweep& sw) {
     const double eps = std::numeric_limits<double>::epsilon();
     kit::Figure fig(scene, "omega_fd_error_vs_step.svg");
-    fig << "set title 'Ω from finite differences of R(t): truncation meets round-off'\n"
-           "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-           "set xlabel 'step h'\nset ylabel '|Ω_{fd} − α{/:Bold a}| / α'\n"
-           "set key at graph 0.36, 0.97 left top\nset yrange [1e-17:10]\n";
-    std::string plot = "plot ";
+    std::string curves;
     for (std::size_t s = 0; s < stencils.size(); ++s)
-        plot += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
-    plot += "'-' using 1:2 with lines ls 9 title 'round-off, ε / (αh)'\n";
-    fig << plot;
+        curves += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
+    fig.script(kit::gp::error_vs_step, {{"stencils", curves}});
     for (std::size_t s = 0; s < stencils.size(); ++s) {
         std::vector<std::vector<double>> col;
         for (const auto& r : sw.rows) col.push_back({r[0], std::max(r[s + 1], 1e-17)});
@@ -178,13 +174,7 @@ void draw_error_vs_step(kit::Scene& scene, const Params& p, const Sweep& sw) {
 
 void draw_error_vs_time(kit::Scene& scene, const Sweep& sw) {
     kit::Figure wp(scene, "omega_fd_error_vs_time.svg");
-    wp << "set title 'Best error against run time per recovery of Ω (labels: order)'\n"
-          "set logscale y\nset format y '10^{%L}'\nset xlabel 'run time per recovery of Ω (ns)'\n"
-          "set ylabel 'best |Ω_{fd} − α{/:Bold a}| / α'\nset key top right\n"
-          "set offsets graph 0.15, graph 0.15, graph 0.3, graph 0.3\n"
-          "plot '-' using 1:2 with linespoints ls 1 title 'central, orders 2-8', "
-          "'-' using 1:2 with points ls 2 ps 1.2 title 'forward, order 1', "
-          "'-' using 1:2:(sprintf('%d', $3)) with labels offset 1.2, 0.8 notitle\n";
+    wp.script(kit::gp::error_vs_time);
     std::vector<std::vector<double>> central;
     for (std::size_t s = 1; s < stencils.size(); ++s) central.push_back({1e9 * sw.time_per[s], sw.best_err[s]});
     wp.data(central).data({{1e9 * sw.time_per[0], sw.best_err[0]}});

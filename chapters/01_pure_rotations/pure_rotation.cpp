@@ -14,6 +14,7 @@
 
 #include "figure.hpp"
 #include "motion.hpp"
+#include "pure_rotation.gp.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
 
@@ -152,15 +153,7 @@ void draw(kit::Scene& scene, const Params& p, const Turn& turn) {
     kit::Figure fig(scene, "pure_rotation.svg", 760, 620);
     if (!fig.enabled()) return;
     const Vec3& a = turn.a;
-    fig << "set view 58, 32, 1.0, 1.2\nset view equal xyz\nset xyplane 0\nset border 4095\n"
-           "set xlabel 'e_1'\nset ylabel 'e_2'\nset zlabel 'e_3'\nset key at screen 0.01, 0.99 top left\n"
-           "unset grid\nset xtics 1\nset ytics 1\nset ztics 1\n";
-    fig << "splot '-' with lines ls 7 lw 2.5 title 'axis a', "
-           "'-' with lines ls 8 lw 1 title 'paths of the corners', "
-           "'-' with lines ls 1 lw 1.2 title 'body at t_k = k T / " +
-               std::to_string(p.frames) +
-               "', "
-               "'-' with lines ls 2 lw 2.5 title 'body at t = 0'\n";
+    fig.script(kit::gp::pure_rotation, {{"frames", std::to_string(p.frames)}});
     fig.data({{-1.2 * a.x(), -1.2 * a.y(), -1.2 * a.z()}, {1.6 * a.x(), 1.6 * a.y(), 1.6 * a.z()}});
     std::vector<std::vector<double>> paths, bodies, first;
     for (const auto& path : turn.path) {
