@@ -13,6 +13,7 @@
 
 #include "common.hpp"
 #include "figure.hpp"
+#include "omega_circle.gp.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
@@ -138,13 +139,7 @@ void draw_circle(kit::Scene& scene, const RegularPrecession& p, const Period& r)
     const int samples = static_cast<int>(r.fd.size());
     const std::vector<Vec3>& fd = r.fd;
     const rigid::Circle c = rigid::precession_omega_circle(p);
-    fig << "set view 62, 38, 0.95, 1.0\nset view equal xyz\nset xyplane 0\nset border 4095\nunset grid\n"
-           "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
-           "set key at screen 0.01, 0.99 top left\n"
-           "splot '-' with lines ls 7 lw 2.5 title 'axis a', '-' with lines ls 8 lw 1 title 'body cone (origin to "
-           "Ω(t))', "
-           "'-' with lines ls 1 lw 2 title 'circle predicted from (1.5)-(1.7)', "
-           "'-' with points ls 2 pt 7 ps 0.5 title 'Ω(t) from finite differences of R(t)'\n";
+    fig.script(kit::gp::circle);
     const double top = std::max(1.3 * rigid::precession_axial_component(p), 1.0);
     fig.data({{0, 0, 0}, {top * p.a.x(), top * p.a.y(), top * p.a.z()}});
     std::vector<std::vector<double>> rays, circle, pts;
@@ -167,12 +162,7 @@ void draw_circle(kit::Scene& scene, const RegularPrecession& p, const Period& r)
 
 void draw_sweep(kit::Scene& scene, const std::vector<std::vector<double>>& sweep) {
     kit::Figure f2(scene, "omega_squared_vs_angle.svg");
-    f2 << "set title 'Is |Ω|^2 = (α + β)^2? [P, (1.6)] against direct evaluation'\n"
-          "set xlabel 'angle between a and b (degrees)'\nset ylabel '|Ω|^2'\nset key bottom left\n"
-          "set xrange [0:180]\nset xtics 30\n"
-          "plot '-' using 1:2 with lines ls 9 lw 2 title '(α + β)^2, as printed in (1.6)', "
-          "'-' using 1:2 with lines ls 1 title 'α^2 + β^2 + 2αβ({/:Bold a}, {/:Bold b})', "
-          "'-' using 1:2 with points ls 2 pt 7 ps 0.6 title 'measured from R(t)'\n";
+    f2.script(kit::gp::squared_vs_angle);
     std::vector<std::vector<double>> pr, co, me;
     for (const auto& r : sweep) {
         pr.push_back({r[0], r[4]});

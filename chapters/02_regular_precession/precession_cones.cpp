@@ -16,6 +16,7 @@
 #include "common.hpp"
 #include "figure.hpp"
 #include "motion.hpp"
+#include "precession_cones.gp.hpp"
 #include "rigid/precession.hpp"
 #include "rigid/rotation.hpp"
 #include "scene.hpp"
@@ -146,20 +147,14 @@ void draw_case(kit::Figure& fig, const RegularPrecession& p, const CaseResult& r
     char title[160];
     std::snprintf(title, sizeof title, "angle(a, b) = %.0f deg;  α = %.2g;  β = %.2g",
                   std::acos(p.a.dot(p.b)) * 180 / std::numbers::pi, p.alpha, p.beta);
-    fig << "set title " + kit::quoted(title) + "\n";
-    fig << "splot '-' with lines ls 8 lw 0.8, '-' with lines ls 1 lw 2, '-' with lines ls 6 lw 0.8, "
-           "'-' with lines ls 2 lw 2, '-' with lines ls 3 lw 1, '-' with lines ls 7 lw 3\n";
+    fig.script(kit::gp::panel, {{"title", kit::quoted(title)}});
     fig.data(space_rays).data(space_rim).data(body_rays).data(body_rim).data(path).data(contact);
 }
 
 void draw(kit::Scene& scene, const std::vector<RegularPrecession>& cases, const std::vector<CaseResult>& results) {
     kit::Figure fig(scene, "precession_cones.svg", 1200, 460);
     if (!fig.enabled()) return;
-    fig << "set multiplot layout 1, 3 title 'Space cone (about b, fixed), body cone (about R(t*)a, carried by the "
-           "body) "
-           "and the path of a body point'\n"
-           "set view 68, 30, 1.0, 1.25\nset view equal xyz\nset xyplane 0\nunset grid\nunset key\n"
-           "set xtics 1\nset ytics 1\nset ztics 1\nset border 4095\n";
+    fig.script(kit::gp::precession_cones);
     for (std::size_t c = 0; c < cases.size(); ++c) draw_case(fig, cases[c], results[c]);
     fig << "unset multiplot\n";
     fig.finish();
