@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "dzhanibekov.gp.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "motion.hpp"
@@ -255,18 +256,10 @@ void draw_flip(kit::Scene& scene, const Flip& f) {
     }
     kit::Figure fig(scene, "dzhanibekov_flip.svg", 900, 480);
     // A label that names a rounded start is long: the key goes below the plot.
-    const std::string key = f.flips.ideal ? "set key outside right\n" : "set key below height 1\n";
-    fig << "set title 'Spin about the middle axis, perturbed by δ: the body flips (exact motion)'\n"
-           "set xlabel 't'\nset ylabel 'components of Ω'\n" +
-               key + "set yrange [" + std::to_string(-1.08 * top) + ":" + std::to_string(1.08 * top) +
-               "]\n"
-               "plot '-' using 1:2 with lines ls 3 title 'smallest-axis component × 10', "
-               "'-' using 1:2 with lines ls 1 lw 2.5 title 'middle-axis component', "
-               "'-' using 1:2 with lines ls 4 title 'largest-axis component × 10', "
-               "'-' using 1:2 with lines ls 9 lw 2 title " +
-               kit::quoted(f.flips.label) +
-               ", "
-               "'-' using 1:2 with points ls 2 pt 6 ps 0.5 title 'student RK4'\n";
+    fig.script(kit::gp::flip, {{"key", f.flips.ideal ? "outside right" : "below height 1"},
+                               {"ymin", std::to_string(-1.08 * top)},
+                               {"ymax", std::to_string(1.08 * top)},
+                               {"flips", kit::quoted(f.flips.label)}});
     fig.data(c1).data(c2).data(c3).data(c4).data(c5);
     fig.finish();
 }
@@ -275,14 +268,8 @@ void draw_error(kit::Scene& scene, const Setup& u, const Flip& f) {
     const double tol = u.p.tol, h = u.p.h;
     const auto& err_rows = f.err_rows;
     kit::Figure fe(scene, "dzhanibekov_error.svg", 900, 480);
-    fe << "set title 'Error against the exact motion: it jumps at every flip'\n"
-          "set xlabel 't'\nset ylabel '|Ω − Ω_{exact}| / |Ω(0)|'\n"
-          "set logscale y\nset format y '10^{%L}'\nset key top left\n"
-          "plot '-' using 1:2 with lines ls 1 title " +
-              kit::quoted("rk8pd, tol " + short_number(tol)) +
-              ", "
-              "'-' using 1:2 with lines ls 2 title " +
-              kit::quoted("student RK4, h = " + short_number(h)) + "\n";
+    fe.script(kit::gp::error, {{"rk8pd", kit::quoted("rk8pd, tol " + short_number(tol))},
+                               {"rk4", kit::quoted("student RK4, h = " + short_number(h))}});
     std::vector<std::vector<double>> a, b;
     for (const auto& r : err_rows) {
         a.push_back({r[0], r[1]});

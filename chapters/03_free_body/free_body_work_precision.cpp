@@ -11,6 +11,7 @@
 #include "body.hpp"
 #include "figure.hpp"
 #include "free_body_scene.hpp"
+#include "free_body_work_precision.gp.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/require.hpp"
 #include "rigid/rotation.hpp"
@@ -111,27 +112,14 @@ void report(kit::Scene& scene, const Params& p, const Reference& ref, const std:
 void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<double>>& rows) {
     auto series = [&](int id, int col) { return kit::points_where(rows, 0, id, 2, {std::size_t(col)}); };
     kit::Figure fig(scene, "free_body_work_precision.svg", 820, 520);
-    fig << "set title 'Free body, T = " + std::to_string(int(p.T)) +
-               ": error against run time (min over repetitions)'\n"
-               "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set xlabel 'run time (s)'\nset ylabel 'max error: Ω (relative) and R (angle, rad)'\nset key top right\n"
-               "plot '-' with linespoints ls 1 title 'student RK4, h = 0.2 ... 0.001', "
-               "'-' with linespoints ls 2 title 'GSL rkf45, tol = 1e-4 ... 1e-13', "
-               "'-' with linespoints ls 3 title 'GSL rk8pd, tol = 1e-4 ... 1e-14'\n";
+    fig.script(kit::gp::free_body_work_precision, {{"T", std::to_string(int(p.T))}});
     for (int id = 0; id < 3; ++id) fig.data(kit::points_where(rows, 0, id, 2, {4, 5}));
     fig.finish();
 
     kit::Figure fd(scene, "free_body_drift.svg", 1000, 430);
-    fd << "set multiplot layout 1, 2 title 'What the integrators do to the invariants (max over the run)'\n"
-          "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\nset key bottom "
-          "left font ',9'\n"
-          "set title 'energy (6.9)'\nset ylabel '|E(t) - E(0)| / E(0)'\n"
-          "plot '-' with linespoints ls 1 title 'student RK4', '-' with linespoints ls 2 title 'rkf45', "
-          "'-' with linespoints ls 3 title 'rk8pd'\n";
+    fd.script(kit::gp::drift);
     fd.data(series(0, 6)).data(series(1, 6)).data(series(2, 6));
-    fd << "set title 'orthogonality of R'\nset ylabel '‖R^T R − 1‖_F'\n"
-          "plot '-' with linespoints ls 1 title 'student RK4', '-' with linespoints ls 2 title 'rkf45', "
-          "'-' with linespoints ls 3 title 'rk8pd'\n";
+    fd.script(kit::gp::orthogonality);
     fd.data(series(0, 8)).data(series(1, 8)).data(series(2, 8));
     fd << "unset multiplot\n";
     fd.finish();

@@ -18,6 +18,7 @@
 #include "figure.hpp"
 #include "free_body_scene.hpp"
 #include "motion.hpp"
+#include "polhodes.gp.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/require.hpp"
 #include "rigid/rotation.hpp"
@@ -177,13 +178,7 @@ void draw(kit::Scene& scene, const Params& p, const Polhodes& r) {
     const Vec3& I = p.I;
     const double E = p.energy;
     const Vec3 semi(std::sqrt(2 * E / I(0)), std::sqrt(2 * E / I(1)), std::sqrt(2 * E / I(2)));
-    fig << "set view 58, 32, 1.0, 1.35\nset view equal xyz\nset xyplane 0\nunset grid\nset border 4095\n"
-           "set xlabel 'Ω_1'\nset ylabel 'Ω_2'\nset zlabel 'Ω_3'\n"
-           "set key at screen 0.01, 0.99 top left\n"
-           "splot '-' with lines ls 8 lw 0.5 title 'energy ellipsoid', "
-           "'-' with lines ls 1 lw 2 title 'polhodes about the smallest axis', "
-           "'-' with lines ls 2 lw 2 title 'polhodes about the largest axis', "
-           "'-' with lines ls 7 lw 2.5 title 'separatrix (two plane ellipses)'\n";
+    fig.script(kit::gp::polhodes);
     fig.data(ellipsoid(semi)).data(join(r.lo)).data(join(r.hi)).data(separatrix(I, E, semi));
     fig.finish();
 }

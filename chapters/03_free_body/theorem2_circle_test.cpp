@@ -21,6 +21,7 @@
 #include "rigid/precession.hpp"
 #include "rigid/require.hpp"
 #include "scene.hpp"
+#include "theorem2_circle_test.gp.hpp"
 
 using rigid::Vec3;
 
@@ -196,30 +197,14 @@ std::vector<std::vector<double>> series(const std::vector<std::vector<double>>& 
 void draw(kit::Scene& scene, const Results& r) {
     const auto& rows = r.rows;
     kit::Figure fig(scene, "theorem2_residuals.svg", 1000, 460);
-    fig << "set multiplot layout 1, 2 title 'Free motions: distance of the polhode from a plane and from a circle "
-           "(relative to its size)'\n"
-           "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset yrange [1e-17:10]\n"
-           "set ylabel 'max residual / size of the polhode'\nset key bottom left font ',9'\n";
-    fig << "set title 'towards a principal axis (m -> 0)'\nset xlabel 'elliptic parameter m'\nset xrange [1e-13:1]\n"
-           "plot '-' with linespoints ls 1 title 'plane, about the smallest axis', '-' with linespoints ls 2 title "
-           "'plane, about the largest axis', "
-           "'-' with linespoints ls 3 title 'circle, about the smallest axis', '-' with linespoints ls 4 title "
-           "'circle, "
-           "about the largest axis', "
-           "'-' with linespoints ls 7 title 'nearly symmetric body: circle residual'\n";
+    fig.script(kit::gp::theorem2_circle_test);
     std::vector<std::vector<double>> sym;
     for (const auto& s : r.sym_rows)
         if (s[1] > 0)
             sym.push_back({s[1], std::max(s[3], 1e-17)});  // the exactly symmetric body (m = 0) is in the table
     fig.data(series(rows, -1, true, 4)).data(series(rows, 1, true, 4)).data(series(rows, -1, true, 5));
     fig.data(series(rows, 1, true, 5)).data(sym);
-    fig << "set title 'towards the separatrix (m_c -> 0)'\nset xlabel 'complementary parameter m_c = 1 - m'\nset "
-           "xrange [1e-13:1]\n"
-           "plot '-' with linespoints ls 1 title 'plane, about the smallest axis', '-' with linespoints ls 2 title "
-           "'plane, about the largest axis', "
-           "'-' with linespoints ls 3 title 'circle, about the smallest axis', '-' with linespoints ls 4 title "
-           "'circle, "
-           "about the largest axis'\n";
+    fig.script(kit::gp::separatrix);
     fig.data(series(rows, -1, false, 4)).data(series(rows, 1, false, 4)).data(series(rows, -1, false, 5));
     fig.data(series(rows, 1, false, 5));
     fig << "unset multiplot\n";
