@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "heavy_top_series.gp.hpp"
 #include "rigid/heavy_top.hpp"
 #include "scene.hpp"
 
@@ -184,17 +185,7 @@ void draw(kit::Scene& scene, const std::vector<std::vector<double>>& table) {
         figT.push_back({r[0], std::max(r[3], 1e-17), std::max(r[4], 1e-17)});
     }
     kit::Figure fig(scene, "series_check.svg", 860, 520);
-    fig << "set title 'The series (3.5) for E and (3.6) for T, coefficient by coefficient'\n"
-           "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:10]\n"
-           "set ylabel '|coefficient - numerical| / largest coefficient'\n"
-           "set xtics ('const' 0, 'cos αt' 1, 'sin αt' 2, 'cos 2αt' 3, "
-           "'sin 2αt' 4, 'cos βt' 5, 'sin βt' 6, 'cos γ_+t' 7, "
-           "'sin γ_+t' 8, 'cos γ_-t' 9, 'sin γ_-t' 10) rotate by -35\n"
-           "set xrange [-0.6:10.6]\nset key top left\n"
-           "plot '-' using ($1-0.2):2 with impulses lw 6 lc rgb '#D55E00' title 'E, as printed in [P]', "
-           "'-' using ($1-0.2):3 with points ls 1 pt 7 ps 1.0 title 'E, corrected', "
-           "'-' using ($1+0.2):2 with impulses lw 6 lc rgb '#E69F00' title 'T, as printed in [P]', "
-           "'-' using ($1+0.2):3 with points ls 3 pt 9 ps 1.2 title 'T, corrected'\n";
+    fig.script(kit::gp::heavy_top_series);
     fig.data(figE).data(figE).data(figT).data(figT);
     fig.finish();
 }

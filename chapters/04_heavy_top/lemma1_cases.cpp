@@ -14,6 +14,7 @@
 
 #include "body.hpp"
 #include "figure.hpp"
+#include "lemma1_cases.gp.hpp"
 #include "precession.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/rotation.hpp"
@@ -142,21 +143,16 @@ void report(kit::Scene& scene, const Vec3& moments, const Grid& grid) {
 
 void draw(kit::Scene& scene, const Vec3& moments, const Grid& grid) {
     kit::Figure fig(scene, "lemma1_min_residual.svg", 820, 500);
-    fig << "set title 'Smallest residual of E = f T found, asymmetric body (A, B, C) = (" +
-               std::to_string(moments(0)).substr(0, 4) + ", " + std::to_string(moments(1)).substr(0, 4) + ", " +
-               std::to_string(moments(2)).substr(0, 4) +
-               ")'\n"
-               "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [20:160]\n"
-               "set xlabel 'angle γ between a and b (degrees)'\nset ylabel 'min RMS |E - fT| / f'\n"
-               "set xtics 30\nset key bottom left\nset label 1 'Case 3, b_3 = 0: the Grioli precession' at 93, 1e-15 "
-               "tc rgb '#0072B2'\n";
+    const std::string moments_text = std::to_string(moments(0)).substr(0, 4) + ", " +
+                                     std::to_string(moments(1)).substr(0, 4) + ", " +
+                                     std::to_string(moments(2)).substr(0, 4);
     const char* titles[] = {"β/α = 1/2 (Case 1)", "β = α (Case 3)", "β/α = √2 (Case 1)", "β = 2α (Case 2)",
                             "β = 3α (|γ_-| = 2α)"};
-    std::string plot = "plot ";
+    std::string curves;
     for (std::size_t r = 0; r < ratios.size(); ++r)
-        plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) + " title '" +
-                titles[r] + "'";
-    fig << plot + "\n";
+        curves += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
+                  " title '" + titles[r] + "'";
+    fig.script(kit::gp::lemma1_cases, {{"moments", moments_text}, {"curves", curves}});
     for (std::size_t r = 0; r < ratios.size(); ++r) {
         std::vector<std::vector<double>> d;
         for (std::size_t g = 0; g < gammas_deg.size(); ++g)

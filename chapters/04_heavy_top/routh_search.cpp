@@ -13,6 +13,7 @@
 #include "body.hpp"
 #include "figure.hpp"
 #include "rigid/heavy_top.hpp"
+#include "routh_search.gp.hpp"
 #include "scene.hpp"
 
 using rigid::Vec3;
@@ -96,19 +97,15 @@ void report(kit::Scene& scene, const Grid& grid) {
 
 void draw(kit::Scene& scene, const Grid& grid) {
     kit::Figure fig(scene, "routh_min_residual.svg", 820, 500);
-    fig << "set title 'Precession about the vertical (b = k): smallest residual of E = f T found'\n"
-           "set logscale y\nset format y '10^{%L}'\nset yrange [1e-17:3]\nset xrange [0:180]\nset xtics 30\n"
-           "set xlabel 'angle γ between the rotation vector a and the vertical (degrees)'\n"
-           "set ylabel 'min RMS |E - fT| / f'\nset key center right\n";
     const char* rt[] = {"1/2", "1", "2"};
-    std::string plot = "plot ";
+    std::string curves;
     for (std::size_t r = 0; r < ratios.size(); ++r)
-        plot += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                " title 'asymmetric, β/α = " + rt[r] + "'";
+        curves += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
+                  " title 'asymmetric, β/α = " + rt[r] + "'";
     for (std::size_t r = 0; r < ratios.size(); ++r)
-        plot += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                " dt 2 pt 6 title 'symmetric (A = B), β/α = " + rt[r] + "'";
-    fig << plot + "\n";
+        curves += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
+                  " dt 2 pt 6 title 'symmetric (A = B), β/α = " + rt[r] + "'";
+    fig.script(kit::gp::routh_search, {{"curves", curves}});
     for (std::size_t c = 1; c <= 2 * ratios.size(); ++c) {
         std::vector<std::vector<double>> d;
         for (const auto& row : grid.rows) d.push_back({row[0], std::max(row[c], 1e-17)});
