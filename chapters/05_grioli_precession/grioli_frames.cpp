@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_frames.gp.hpp"
 #include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -147,10 +148,12 @@ void arrows(kit::Figure& fig, const std::vector<Arrow>& list) {
     int id = 1;
     for (const Arrow& a : list) {
         const std::string n = std::to_string(id++);
-        fig << "set arrow " + n + " from 0,0,0 to " + xyz(a.v) + " head filled size 0.07,20 " + a.style + " lc rgb '" +
-                   a.colour + "'\n";
-        fig << "set label " + n + " " + kit::quoted(a.text) + " at " + xyz(a.v + a.offset) + " tc rgb '" + a.colour +
-                   "'\n";
+        fig.script(kit::gp::arrow, {{"n", n},
+                                    {"to", xyz(a.v)},
+                                    {"style", a.style},
+                                    {"colour", a.colour},
+                                    {"text", kit::quoted(a.text)},
+                                    {"at", xyz(a.v + a.offset)}});
     }
 }
 
@@ -159,13 +162,8 @@ void arrows(kit::Figure& fig, const std::vector<Arrow>& list) {
 void panel(kit::Figure& fig, const Result& r, const std::string& title, const std::vector<Arrow>& list, const Vec3& G) {
     arrows(fig, list);
     const Vec3 k = r.fr.R0 * r.fr.g.k, b = r.fr.R0 * r.fr.g.b;
-    fig << "set label 20 'θ' at " + xyz(0.5 * (k + b).normalized() + Vec3(0.01, 0, 0.02)) + "\n";
-    fig << "set title " + kit::quoted(title) + "\n"
-        << "splot '-' with lines lc rgb '#E69F00' dt 3 lw 1.5 title 'path of G: a circle about b', "
-           "'-' with points pt 7 ps 1.5 lc rgb '#D55E00' title 'centre of mass G', "
-           "'-' with lines lc rgb '#bbbbbb' lw 1 title 'plane of k and b (the paper sheet)', "
-           "keyentry with lines lc rgb '#555555' lw 1.5 dt 2 title 'dashed: lab vectors (e_1, e_2, e_3; a, b)', "
-           "keyentry with lines lc rgb '#555555' lw 2.5 title 'solid: inertia axes'\n";
+    fig.script(kit::gp::panel,
+               {{"theta_at", xyz(0.5 * (k + b).normalized() + Vec3(0.01, 0, 0.02))}, {"title", kit::quoted(title)}});
     std::vector<std::vector<double>> path;
     for (int i = 0; i <= 120; ++i) {
         const Vec3 p = r.fr.R0 * rigid::grioli_rotation(r.fr.g, 2 * pi * i / 120 / r.fr.g.alpha) * r.fr.g.z0;
@@ -184,11 +182,7 @@ void draw(kit::Scene& scene, const Result& r) {
     const Mat3 e = fr.R0 * fr.E, &A2 = fr.fig2.axes, &A3 = fr.fig3.axes;
     const std::string black = "#000000", blue = "#0072B2", red = "#D55E00", grey = "#777777", green = "#009E73",
                       purple = "#CC79A7", sky = "#56B4E9";
-    fig << "set view 72, 28, 1.7, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
-           "set key at screen 0.5, 0.1 center top horizontal maxrows 2 font ',10'\n"
-           "set xrange [-1.4:1.4]\nset yrange [-1.4:1.4]\nset zrange [-1.1:1.5]\nset xyplane 0\n"
-           "set multiplot layout 1, 2 title 'One counter-clockwise Grioli precession, a quarter period apart "
-           "(lab of Item II, k up)' margins 0.01, 0.99, 0.12, 0.9 spacing 0.02\n";
+    fig.script(kit::gp::grioli_frames);
     const double L = 1.3;
     panel(fig, r, "[P] Figure 2: t = −T/4",
           {{1.45 * k, "k", black, Vec3(0.05, 0, 0.05)},

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_initial_position.gp.hpp"
 #include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -80,24 +81,20 @@ void report(kit::Scene& scene, const Placement& r) {
     scene.report.add("rule_holds", rigid::item_II_rule_holds(m, p.R0, p.k));
 }
 
-// The arrows and labels of the figure: k, b, a, G, the axes R_A, R_C, O and theta.
-void label(kit::Figure& fig, const rigid::LabPlacement& p) {
+// Where the figure's arrows end and its labels stand (grioli_initial_position.gp): k, b, a, G,
+// the axes R_A, R_C and theta.
+kit::Fill places(const rigid::LabPlacement& p) {
     const Vec3 RA = p.R0.col(0), RC = p.R0.col(2);
-    auto arrow = [&](int id, const Vec3& v, double len, const std::string& colour, const std::string& text,
-                     const Vec3& off) {
-        fig << "set arrow " + std::to_string(id) + " from 0,0,0 to " + xyz(len * v) +
-                   " head filled size 0.08,20 lw 2.5 lc rgb '" + colour + "'\n";
-        fig << "set label " + std::to_string(id) + " '" + text + "' at " + xyz(len * v + off) + " tc rgb '" + colour +
-                   "'\n";
-    };
-    arrow(1, p.k, 1.45, "#000000", "k (up)", Vec3(0.05, 0, 0.08));
-    arrow(2, p.b, 1.3, "#0072B2", "b = R_B(0)", Vec3(0.06, 0, 0.06));
-    arrow(3, p.a, 1.3, "#D55E00", "a = z(0)", Vec3(0.0, 0.0, 0.15));
-    fig << "set label 4 'G' at " + xyz(1.0 * p.z0 + Vec3(0.05, 0, -0.12)) + " tc rgb '#D55E00'\n";
-    fig << "set label 5 'R_A' at " + xyz(1.45 * RA) + " tc rgb '#555555'\n";
-    fig << "set label 6 'R_C' at " + xyz(1.45 * RC) + " tc rgb '#555555'\n";
-    fig << "set label 7 'O' at 0.04,0,-0.12\n";
-    fig << "set label 8 'θ' at " + xyz(0.45 * (p.k + p.b).normalized() + Vec3(0.02, 0, 0.03)) + "\n";
+    return {{"k", xyz(1.45 * p.k)},
+            {"k_label", xyz(1.45 * p.k + Vec3(0.05, 0, 0.08))},
+            {"b", xyz(1.3 * p.b)},
+            {"b_label", xyz(1.3 * p.b + Vec3(0.06, 0, 0.06))},
+            {"a", xyz(1.3 * p.a)},
+            {"a_label", xyz(1.3 * p.a + Vec3(0.0, 0.0, 0.15))},
+            {"G_label", xyz(1.0 * p.z0 + Vec3(0.05, 0, -0.12))},
+            {"RA_label", xyz(1.45 * RA)},
+            {"RC_label", xyz(1.45 * RC)},
+            {"theta_label", xyz(0.45 * (p.k + p.b).normalized() + Vec3(0.02, 0, 0.03))}};
 }
 
 void draw(kit::Scene& scene, const Placement& r) {
@@ -109,18 +106,7 @@ void draw(kit::Scene& scene, const Placement& r) {
     // The inertia ellipsoid x.J x = B (so its circular sections have radius 1), drawn small.
     const double s = 0.9, rA = s * std::sqrt(m.B / m.A), rB = s, rC = s * std::sqrt(m.B / m.C);
     const Vec3 w = p.a.cross(RB).normalized();  // in the circular section, with R_B
-    fig << "set view 66, 58, 1.3, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
-           "set key at screen 0.01, 0.90 top left font ',10'\n"
-           "set xrange [-1.5:1.5]\nset yrange [-1.5:1.5]\nset zrange [-1.3:1.6]\nset xyplane 0\n"
-           "set title 'Item II at t = 0: k up, b = R_B(0) tilted by θ, a = z(0) along [b, k]'\n";
-    label(fig, p);
-    fig << "splot '-' with lines lc rgb '#999999' dt 2 lw 1.2 title 'inertia axes R_A, R_C', "
-           "'-' with lines lc rgb '#56B4E9' lw 1 title 'inertia ellipsoid at O', "
-           "'-' with lines lc rgb '#009E73' lw 2.5 title 'its circular section, orthogonal to a', "
-           "'-' with lines lc rgb '#E69F00' dt 3 lw 1.5 title 'path of G: a circle about b', "
-           "'-' with points pt 7 ps 1.6 lc rgb '#D55E00' title 'centre of mass G', "
-           "'-' with lines lc rgb '#bbbbbb' lw 1 title 'plane of k and b (the paper sheet)', "
-           "'-' with lines lc rgb '#000000' lw 1 notitle\n";
+    fig.script(kit::gp::grioli_initial_position, places(p));
     std::vector<std::vector<double>> axes;
     for (const Vec3& v : {RA, RC}) {
         const Vec3 q = 1.4 * v;

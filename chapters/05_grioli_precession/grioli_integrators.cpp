@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_integrators.gp.hpp"
 #include "heavy_body.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/ode.hpp"
@@ -101,17 +102,12 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
                           "|μ|^{{{}}} = {:.1e}",
                           p.periods, v.amplification)
                     : "";
-    fig << "set title \"Theorem 1 as a benchmark: " + std::to_string(p.periods) +
-               " periods, tolerances 10^{-6} to 10^{-12}" + unstable +
-               "\"\n"
-               "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-               "set xlabel 'run time (s)'\nset ylabel 'max geodesic angle between integrated and exact R(t)'\n"
-               "set key outside right top\n";
-    std::string plot = "plot ";
+    std::string curves;
     for (std::size_t i = 0; i < methods.size(); ++i)
-        plot += std::string(i ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(i + 1) + " title '" +
-                methods[i] + (i >= 4 ? " (implicit)" : "") + "'";
-    fig << plot + "\n";
+        curves += std::string(i ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(i + 1) +
+                  " title '" + methods[i] + (i >= 4 ? " (implicit)" : "") + "'";
+    fig.script(kit::gp::grioli_integrators,
+               {{"periods", std::to_string(p.periods)}, {"unstable", unstable}, {"curves", curves}});
     for (std::size_t i = 0; i < methods.size(); ++i) {
         std::vector<std::vector<double>> d;
         for (const auto& r : table)

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_paths.gp.hpp"
 #include "heavy_body.hpp"
 #include "motion.hpp"
 #include "precession.hpp"
@@ -144,27 +145,21 @@ std::string xyz(const Vec3& v) {
 // One panel: k, b, arrows along both paths, the paths integrated and exact, their starts.
 void draw_panel(kit::Figure& fig, const Paths& P, const Vec3& b, int panel) {
     const char* names[] = {"counter-clockwise: R^b(αt) R^a(αt)", "clockwise: R^b(-αt) R^a(-αt)"};
-    fig << std::string("set title '") + names[panel] + "'\n";
-    fig << "set arrow 1 from 0,0,0 to 0,0,1.3 head filled size 0.08,20 lw 2 lc rgb '#000000'\n"
-           "set label 1 'k' at 0.05,0,1.3\n"
-           "set arrow 2 from 0,0,0 to " +
-               xyz(1.2 * b) +
-               " head filled size 0.08,20 lw 2 lc rgb '#0072B2'\n"
-               "set label 2 'b' at " +
-               xyz(1.25 * b) + " tc rgb '#0072B2'\n";
+    fig.script(kit::gp::panel, {{"title", names[panel]}, {"b", xyz(1.2 * b)}, {"b_label", xyz(1.25 * b)}});
     // Arrows along both paths show the sense of motion: the clockwise paths are the same
     // curves, run backwards.
     int id = 10;
     for (const std::vector<Vec3>* path : {&P.cm_exact, &P.tip_exact})
         for (std::size_t i = path->size() / 8; i + 8 < path->size(); i += path->size() / 4)
-            fig << "set arrow " + std::to_string(id++) + " from " + xyz((*path)[i]) + " to " + xyz((*path)[i + 8]) +
-                       " head filled size screen 0.025,20,60 lw 2.5 lc rgb '#000000'\n";
+            fig.script(kit::gp::sense_arrow,
+                       {{"n", std::to_string(id++)}, {"from", xyz((*path)[i])}, {"to", xyz((*path)[i + 8])}});
     // Start markers: where G and the tip are at t = 0.
-    fig << std::string("splot '-' with lines ls 2 lw 2 title ") + (panel ? "''" : "'G, exact'") +
-               ", '-' with points ls 2 pt 7 ps 0.35 title " + (panel ? "''" : "'G, integrated'") +
-               ", '-' with lines ls 3 lw 2 title " + (panel ? "''" : "'tip of R_B, exact'") +
-               ", '-' with points ls 3 pt 7 ps 0.35 title " + (panel ? "''" : "'tip of R_B, integrated'") +
-               ", '-' with points pt 6 ps 1.8 lc rgb '#000000' title " + (panel ? "''" : "'t = 0'") + "\n";
+    auto title = [&](const char* text) { return panel ? std::string("''") : kit::quoted(text); };
+    fig.script(kit::gp::curves, {{"G_exact", title("G, exact")},
+                                 {"G_integrated", title("G, integrated")},
+                                 {"tip_exact", title("tip of R_B, exact")},
+                                 {"tip_integrated", title("tip of R_B, integrated")},
+                                 {"start", title("t = 0")}});
     std::vector<std::vector<double>> thin_cm, thin_tip;
     for (std::size_t i = 0; i < P.cm.size(); i += 6) {
         thin_cm.push_back({P.cm[i].x(), P.cm[i].y(), P.cm[i].z()});
@@ -180,10 +175,7 @@ void draw_panel(kit::Figure& fig, const Paths& P, const Vec3& b, int panel) {
 void draw(kit::Scene& scene, const Both& r) {
     kit::Figure fig(scene, "two_precessions.svg", 1000, 600);
     if (!fig.enabled()) return;
-    fig << "set multiplot layout 1,2 title 'The two regular precessions of Theorem 1, one period, in a lab with k up'\n"
-           "set view 66, 32, 1.45, 1.0\nset view equal xyz\nunset border\nunset tics\nunset grid\n"
-           "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\nset zrange [-1.2:1.4]\n"
-           "set key at screen 0.5, 0.1 center center horizontal maxrows 2 font ',10'\n";
+    fig.script(kit::gp::grioli_paths);
     draw_panel(fig, r.ccw, r.p.b, 0);
     draw_panel(fig, r.cw, r.p.b, 1);
     fig << "unset multiplot\n";
