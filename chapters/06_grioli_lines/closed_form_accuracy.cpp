@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "closed_form_accuracy.gp.hpp"
 #include "common.hpp"
 #include "figure.hpp"
 #include "reference/quad_inertia.hpp"
@@ -154,19 +155,7 @@ void report(kit::Scene& scene, const DistanceSweep& sw, const std::vector<std::v
 void draw_distance(kit::Scene& scene, const std::vector<std::vector<double>>& rows) {
     kit::Figure fig(scene, "accuracy_vs_distance.svg", 820, 520);
     if (!fig.enabled()) return;
-    fig << "set encoding utf8\nset logscale xy\nset format x '10^{%T}'\nset format y '10^{%T}'\n"
-           "set xlabel 'distance L / body size √(C_g/μ), on a Grioli line'\nset ylabel 'relative error "
-           "against binary128'\n"
-           "set yrange [1e-18:10]\nset key below box opaque maxrows 3 font ',10'\n"
-           "set title 'printed forms (dashed) lose what the rewritten ones (solid) keep'\n"
-           "plot '-' using 1:2 with lines ls 1 dt 2 title 'A, printed (5.3)', "
-           "'' using 1:3 with lines ls 1 title 'A, rewritten', "
-           "'' using 1:4 with points ls 1 pt 6 title 'A, eigen-solver', "
-           "'' using 1:5 with lines ls 2 dt 2 title 'C - B, printed (5.3)', "
-           "'' using 1:6 with lines ls 2 title 'C - B, rewritten', "
-           "'' using 1:7 with points ls 2 pt 4 title 'C - B, eigen-solver', "
-           "'' using 1:8 with lines ls 3 dt 2 title 'sin^2 φ, printed (5.12)', "
-           "'' using 1:9 with lines ls 3 title 'sin^2 φ, rewritten'\n";
+    fig.script(kit::gp::distance);
     for (int rep = 0; rep < 8; ++rep) fig.data(rows);
     fig.finish();
 }
@@ -174,16 +163,7 @@ void draw_distance(kit::Scene& scene, const std::vector<std::vector<double>>& ro
 void draw_symmetric(kit::Scene& scene, const std::vector<std::vector<double>>& rows2) {
     kit::Figure fig(scene, "accuracy_nearly_symmetric.svg", 820, 500);
     if (!fig.enabled()) return;
-    fig << "set encoding utf8\nset logscale xy\nset format x '10^{%T}'\nset format y '10^{%T}'\n"
-           "set xlabel '(B_g - A_g) / (C_g - A_g)   (A_g = 1, C_g = 1.5, L = 0.1 body sizes)'\n"
-           "set ylabel 'relative error against binary128'\nset yrange [1e-18:10]\nset xrange [*:*] reverse\n"
-           "set key below box opaque maxrows 2 font ',10'\nset title 'nearly symmetric bodies: B_g → A_g'\n"
-           "plot '-' using 1:2 with lines ls 3 dt 2 title 'cos^2 φ on the line, printed (5.12)', "
-           "'' using 1:3 with lines ls 3 title 'cos^2 φ, rewritten', "
-           "'' using 1:4 with lines ls 2 dt 2 title 'B - A, printed (5.3)', '' using 1:5 with lines ls 2 title 'B "
-           "- A, rewritten', "
-           "'' using 1:6 with lines ls 4 dt 2 title 'h_{crit}, printed (5.8)', '' using 1:7 with lines ls 4 title "
-           "'h_{crit}, rewritten'\n";
+    fig.script(kit::gp::nearly_symmetric);
     for (int rep = 0; rep < 6; ++rep) fig.data(rows2);
     fig.finish();
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "euler_gap_form.gp.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -323,13 +324,7 @@ void report(kit::Scene& scene, const Params& p, const std::vector<std::vector<do
 void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, const Summary& s, int panel) {
     const std::string dominated =
         s.unstable > 0 && s.dominated == s.unstable ? "\\nat ×, the error is dominated by the instability" : "";
-    // A double-quoted gnuplot string, so that \n breaks the title's line.
-    fig << (panel == 0
-                ? "set title \"error against Theorem 1 (×: unstable, Chapter 7; at 30: naive gave up)" + dominated +
-                      "\"\n"
-                      "set ylabel 'max angle between R(t) and R^b(αt)R^a(αt) (rad)'\nset yrange [1e-12:100]\n"
-                : "set title 'run time of one integration'\nset ylabel 'run time (s)'\nset yrange [1e-4:10]\n");
-    std::string plot = "plot ";
+    std::string curves;
     std::vector<std::vector<std::vector<double>>> blocks;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         std::vector<std::vector<double>> g, n, u;
@@ -341,26 +336,23 @@ void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, 
             if (!std::isnan(nv)) n.push_back({r[1], std::max(nv, 1e-12)});
         }
         const std::string ls = "ls " + std::to_string(b + 1);
-        plot += "'-' with linespoints " + ls + " title " + kit::quoted("gaps, " + bodies[b].name) + ", ";
-        plot += "'-' with linespoints " + ls + " dt 2 pt 6 title " + kit::quoted("naive, " + bodies[b].name) + ", ";
-        plot += "'-' with points " + ls + " pt 2 ps 1.2 notitle, ";
+        curves += "'-' with linespoints " + ls + " title " + kit::quoted("gaps, " + bodies[b].name) + ", ";
+        curves += "'-' with linespoints " + ls + " dt 2 pt 6 title " + kit::quoted("naive, " + bodies[b].name) + ", ";
+        curves += "'-' with points " + ls + " pt 2 ps 1.2 notitle, ";
         blocks.push_back(g), blocks.push_back(n),
             blocks.push_back(u.empty() ? std::vector<std::vector<double>>{{nan_, nan_}} : u);
     }
-    plot +=
-        panel == 0 ? "1e-9 with lines ls 9 title 'target 10^{-9}'\n" : "0.05 with lines ls 9 title 'target 50 ms'\n";
-    fig << plot;
+    if (panel == 0)
+        fig.script(kit::gp::error, {{"dominated", dominated}, {"curves", curves}});
+    else
+        fig.script(kit::gp::time, {{"curves", curves}});
     for (const auto& bl : blocks) fig.data(bl);
 }
 
 void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<double>>& rows, const Summary& s) {
     kit::Figure fig(scene, "euler_gap_form.svg", 1100, 480);
     if (!fig.enabled()) return;
-    fig << "set encoding utf8\nset multiplot layout 1, 2 title 'A body hung at L on a Grioli line, " +
-               std::to_string(p.periods) +
-               " periods of rk8pd: Euler equations naive (open, dashed) and on the moment gaps (filled, solid)'\n"
-               "set logscale y\nset format y '10^{%T}'\nset xlabel 'log_{10} of L in body sizes sqrt(C_g/μ)'\n"
-               "set xrange [-6.3:8.3]\nset xtics 2\nset key below font ',9' maxrows 3\n";
+    fig.script(kit::gp::euler_gap_form, {{"periods", std::to_string(p.periods)}});
     draw_panel(fig, rows, s, 0);
     draw_panel(fig, rows, s, 1);
     fig << "unset multiplot\n";

@@ -13,6 +13,7 @@
 
 #include "common.hpp"
 #include "figure.hpp"
+#include "moments_along_lines.gp.hpp"
 
 using namespace ch6;
 
@@ -145,30 +146,20 @@ void draw(kit::Scene& scene, const BodyAtG& b, const std::vector<Line>& lines, c
           int first, bool crossing) {
     kit::Figure fig(scene, file, 960, 480);
     if (!fig.enabled()) return;
-    fig << "set multiplot layout 1,2\nset xlabel 'distance L from G to O'\nset ylabel 'moment of inertia at "
-           "O'\n"
-           "set encoding utf8\nset key top left box opaque\nset xrange [0:" +
-               std::to_string(c.L_max) + "]\n";
+    fig.script(kit::gp::moments_along_lines, {{"L_max", std::to_string(c.L_max)}});
     for (int l = first; l < first + 2; ++l) {
-        fig << "set title " + kit::quoted(lines[l].title) + "\nunset arrow\nunset label\n";
+        fig.script(kit::gp::panel, {{"title", kit::quoted(lines[l].title)}});
         if (crossing) {
             const double Lc = std::sqrt(rigid::critical_h(b, lines[l].z) / b.mu);
-            fig << "set arrow from " + std::to_string(Lc) + ", graph 0 to " + std::to_string(Lc) +
-                       ", graph 1 nohead ls 9\nset label 'B = C' at " + std::to_string(Lc) +
-                       ", graph 0.75 offset 0.5,0\n";
+            fig.script(kit::gp::marker,
+                       {{"L", std::to_string(Lc)}, {"ls", "9"}, {"text", "B = C"}, {"height", "0.75"}});
         }
         if (l == 0) {
             const double La = std::sqrt((b.C_g - b.A_g) / b.mu);
-            fig << "set arrow from " + std::to_string(La) + ", graph 0 to " + std::to_string(La) +
-                       ", graph 1 nohead ls 10\nset label 'A = C' at " + std::to_string(La) +
-                       ", graph 0.62 offset 0.5,0\n";
+            fig.script(kit::gp::marker,
+                       {{"L", std::to_string(La)}, {"ls", "10"}, {"text", "A = C"}, {"height", "0.62"}});
         }
-        fig << "plot '-' using 1:2 with lines ls 1 title 'A', '' using 1:3 with lines ls 2 title 'B = B_g + "
-               "h', "
-               "'' using 1:4 with lines ls 3 title 'C', "
-               "'' using 1:5 every 12 with points ls 7 pt 6 title 'eigen-solver', "
-               "'' using 1:6 every 12 with points ls 7 pt 6 notitle, '' using 1:7 every 12 with points ls 7 pt "
-               "6 notitle\n";
+        fig.script(kit::gp::curves);
         for (int rep = 0; rep < 6; ++rep) fig.data(c.curves[l]);
     }
     fig << "unset multiplot\n";

@@ -15,6 +15,7 @@
 
 #include "common.hpp"
 #include "figure.hpp"
+#include "regions_plane.gp.hpp"
 
 using namespace ch6;
 
@@ -223,13 +224,11 @@ Regions regions(const BodyAtG& b, double R) {
     return g;
 }
 
-// The labels I-VI of the regions, as gnuplot commands.
-std::string region_labels(const BodyAtG& b, double R) {
+// The labels I-VI of the regions.
+void region_labels(kit::Figure& fig, const BodyAtG& b, double R) {
     const double yv = std::sqrt((b.C_g - b.B_g) / b.mu);  // the vertex of the hyperbola
-    std::string labels;
     auto label = [&](const std::string& text, double x, double y) {
-        labels += "set label " + kit::quoted(text) + " at " + std::to_string(x) + "," + std::to_string(y) +
-                  " center font ',15' front\n";
+        fig.script(kit::gp::label, {{"text", kit::quoted(text)}, {"x", std::to_string(x)}, {"y", std::to_string(y)}});
     };
     label("I", 0.8 * R, 0.0);
     label("II", -0.8 * R, 0.0);
@@ -237,7 +236,6 @@ std::string region_labels(const BodyAtG& b, double R) {
     label("IV", 0.0, -0.5 * std::min(yv, R));
     label("V", 0.0, 0.5 * (std::min(yv, R) + R));
     label("VI", 0.0, -0.5 * (std::min(yv, R) + R));
-    return labels;
 }
 
 // Figure 5.
@@ -248,29 +246,13 @@ void draw(kit::Scene& scene, const BodyAtG& b) {
     const Regions g = regions(b, R);
     const auto normals = rigid::circular_section_normals(Vec3(b.A_g, b.B_g, b.C_g).asDiagonal());
     const Vec3 n0 = 0.6 * R * normals[0], n1 = 0.6 * R * normals[1];
-    fig << "set size ratio -1\nset xrange [" + std::to_string(-R) + ":" + std::to_string(R) + "]\nset yrange [" +
-               std::to_string(-R) + ":" + std::to_string(R) +
-               "]\n"
-               "set xlabel 'x_A (along the smallest axis at G)'\nset ylabel 'x_C (along the largest axis at G)'\n"
-               "set key below maxrows 3 box opaque\nset border 15\nunset grid\n"
-               "set style fill transparent solid 0.45 noborder\n"
-        << region_labels(b, R)
-        << "set arrow from 0,0 to " + std::to_string(n0.x()) + "," + std::to_string(n0.z()) +
-               " lw 2.5 lc rgb '#CC79A7' front\n"
-               "set arrow from 0,0 to " +
-               std::to_string(n1.x()) + "," + std::to_string(n1.z()) +
-               " lw 2.5 lc rgb '#CC79A7' front\n"
-               "set label 'G' at 0,0 offset 0.6,-0.6 front\n"
-               "plot '-' using 1:2:3 with filledcurves lc rgb '#56B4E9' title 'I, II: A < B < C at every distance "
-               "L', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#56B4E9' notitle, "
-               "'-' using 1:2:3 with filledcurves lc rgb '#009E73' title 'III, IV: A < B < C up to the hyperbola', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#009E73' notitle, "
-               "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' title 'V, VI: A < C < B', "
-               "'-' using 1:2:3 with filledcurves lc rgb '#E69F00' notitle, "
-               "'-' with lines ls 7 lw 2.5 title 'hyperbola (5.7): B = C', '-' with lines ls 7 lw 2.5 notitle, "
-               "'-' with lines ls 2 lw 2 dt 2 title 'Grioli lines (5.15)', '-' with lines ls 2 lw 2 dt 2 notitle, "
-               "NaN with lines lw 2.5 lc rgb '#CC79A7' title 'circular-section normals'\n";
+    fig.script(kit::gp::regions_plane, {{"xmin", std::to_string(-R)},
+                                        {"xmax", std::to_string(R)},
+                                        {"ymin", std::to_string(-R)},
+                                        {"ymax", std::to_string(R)}});
+    region_labels(fig, b, R);
+    fig.script(kit::gp::plot, {{"n0", std::to_string(n0.x()) + "," + std::to_string(n0.z())},
+                               {"n1", std::to_string(n1.x()) + "," + std::to_string(n1.z())}});
     fig.data(g.right).data(g.left).data(g.near_up).data(g.near_down).data(g.far_up).data(g.far_down);
     fig.data(g.branch_up).data(g.branch_down).data(g.asym1).data(g.asym2);
     fig.finish();

@@ -13,6 +13,7 @@
 #include "common.hpp"
 #include "figure.hpp"
 #include "reference/quad_inertia.hpp"
+#include "tilt_on_grioli_lines.gp.hpp"
 
 using namespace ch6;
 
@@ -119,27 +120,9 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
     kit::Figure fig(scene, "tilt_on_grioli_lines.svg", 980, 460);
     if (!fig.enabled()) return;
     const std::string off_text = std::to_string(p.off).substr(0, 6);
-    fig << "set encoding utf8\nset multiplot layout 1,2\nset logscale x\nset format x '10^{%T}'\n"
-           "set xlabel 'distance L / body size √(C_g/μ)'\nset key at graph 0.98, graph 0.55 right bottom box "
-           "opaque font ',10'\n"
-           "set title '(a) the two sides of Theorem 1''s condition (lines ± " +
-               off_text +
-               " rad off)'\nset ylabel 'cos^2 φ  and  (B - A)/(C - A)'\n"
-               "set yrange [0.5:1.02]\nset xrange [1e-2:1e2]\n"
-               "plot '-' using 1:2 with lines ls 3 lw 3 title 'on the line: cos^2 φ', "
-               "'' using 1:3 with lines ls 7 dt 2 title '      (B-A)/(C-A)', "
-               "'' using 1:4 with lines ls 1 title 'below: cos^2 φ', "
-               "'' using 1:5 with lines ls 1 dt 2 title '      (B-A)/(C-A)', "
-               "'' using 1:7 with lines ls 2 title 'above: cos^2 φ', "
-               "'' using 1:8 with lines ls 2 dt 2 title '      (B-A)/(C-A)'\n";
+    fig.script(kit::gp::tilt_on_grioli_lines, {{"off", off_text}});
     for (int rep = 0; rep < 6; ++rep) fig.data(rows);
-    fig << "set title '(b) the gap |cos^2 φ - (B - A)/(C - A)|'\nset logscale y\nset format y '10^{%T}'\n"
-           "set ylabel 'gap'\nset yrange [1e-19:1e6]\nset xrange [1e-6:1e6]\nset key inside top right box opaque "
-           "font ',10'\n"
-           "plot '-' using 1:6 with lines ls 1 title 'below the line', '' using 1:9 with lines ls 2 title 'above "
-           "the line', "
-           "'' using 1:11 with points ls 7 pt 6 title 'on the line, eigen-solver', "
-           "'' using 1:10 with lines ls 3 lw 3 title 'on the line, closed forms, relative to sin^2 φ'\n";
+    fig.script(kit::gp::gap);
     for (int rep = 0; rep < 4; ++rep) fig.data(rows);
     fig << "unset multiplot\n";
     fig.finish();

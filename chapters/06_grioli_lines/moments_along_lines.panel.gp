@@ -1,0 +1,3 @@
+set title @title@
+unset arrow
+unset label

@@ -1,0 +1,1 @@
+set label @text@ at @x@,@y@ center font ',15' front
