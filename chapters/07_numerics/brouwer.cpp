@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "brouwer.gp.hpp"
 #include "figure.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -156,16 +157,9 @@ void report(kit::Report& r, const Params& p, const Problem& pb, const Track& pla
 void draw(kit::Scene& scene, const Params& p, const Problem& pb, const Track& plain, const Track& comp) {
     kit::Figure fig(scene, "brouwer.svg", 900, 520);
     if (!fig.enabled()) return;
-    fig << fmt::format(
-        "set title 'Grioli (1, 1.5, 2), Taylor-{}, {} steps a period: root mean square of {} runs'\n"
-        "set logscale xy\nset format x '10^{{%L}}'\nset format y '10^{{%L}}'\n"
-        "set xlabel 'time (periods)'\nset ylabel 'error'\nset key top left\n"
-        "plot '-' with lines lc rgb '#0072B2' lw 2 title 'angle from the exact R, compensated', "
-        "'-' with lines lc rgb '#0072B2' dt 3 lw 2 title 'angle, plain summation', "
-        "'-' with lines lc rgb '#D55E00' lw 2 title '|H − H(0)| / f, compensated', "
-        "'-' with lines lc rgb '#D55E00' dt 3 lw 2 title '|H − H(0)| / f, plain', "
-        "'-' with lines lc rgb '#777777' dt 4 title 't^{{3/2}} and t^{{1/2}} (Brouwer)'\n",
-        p.degree, p.steps, p.ensemble);
+    fig.script(kit::gp::brouwer, {{"degree", fmt::format("{}", p.degree)},
+                                  {"steps", fmt::format("{}", p.steps)},
+                                  {"ensemble", fmt::format("{}", p.ensemble)}});
     for (const auto* y : {&comp.rms_angle, &plain.rms_angle, &comp.rms_energy, &plain.rms_energy}) {
         std::vector<std::vector<double>> rows;
         for (std::size_t i = 1; i < pb.at.size(); ++i) rows.push_back({pb.at[i], std::max((*y)[i], 1e-18)});

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_stability.gp.hpp"
 #include "motion.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
@@ -411,15 +412,7 @@ void draw_map(kit::Scene& scene, const Map& M, const Perturbed& P) {
     const auto& bodies = P.bodies;
     kit::Figure fm(scene, "grioli_stability_map.svg", 900, 620);
     if (fm.enabled()) {
-        fm << "set title 'Grioli precession: growth of the largest Floquet multiplier, ln|μ| per period'\n"
-              "set xlabel 'u = (B - A)/(C - A)   (B = A at the left, B = C at the right)'\n"
-              "set ylabel 'v = (C - A)/B   (v = 1: flat body, A + B = C)'\n"
-              "set xrange [0:1]\nset yrange [0:1.02]\nset cbrange [0:*]\nset cblabel 'ln|μ| per period'\n"
-              "set palette defined (0 'white', 0.02 '#fde0c5', 0.3 '#f39c6b', 1 '#b2182b')\n"
-              "set view map\nset key bottom left opaque font ',10'\n"
-              "splot '-' using 1:2:3 with pm3d notitle, '-' using 1:2:(0) with points pt 7 ps 1.2 lc rgb '#0072B2' "
-              "title 'bodies of the perturbed runs', '-' using 1:2:(0):(sprintf('%d', $3)) with labels offset 0,1 font "
-              "',9' notitle\n";
+        fm.script(kit::gp::map);
         fm.data(map);
         std::vector<std::vector<double>> pts;
         for (const Body& b : bodies) pts.push_back({(b.m.B - b.m.A) / (b.m.C - b.m.A), (b.m.C - b.m.A) / b.m.B});
@@ -437,12 +430,7 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
     const auto& curves = P.curves;
     kit::Figure fp(scene, "grioli_perturbations.svg", 1200, 520);
     if (fp.enabled()) {
-        fp << "set multiplot layout 1, 2 title 'Grioli precession: deviation after a change δ of Ω(0), "
-              "at whole periods'\nset xlabel 't / P'\nset format y '10^{%L}'\nset key top left font ',8' spacing 0.85\n"
-              "set logscale xy\nset title 'd / δ, log-log (δ = 10^{-8} solid, 10^{-6} dashed, 10^{-4} dotted); slope "
-              "1: linear'\n"
-              "set ylabel 'd / δ'\n";
-        std::string plot = "plot ";
+        std::string plot;
         std::vector<std::vector<std::vector<double>>> blocks;
         const char* colours[] = {"#000000", "#0072B2", "#56B4E9", "#009E73", "#E69F00", "#D55E00"};
         const std::size_t first = 3 * (bodies.size() - 1);  // the most unstable body goes right
@@ -452,12 +440,9 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
                     (i % 3 == 0 ? " title " + kit::quoted(bodies[b].name) : std::string(" notitle")) + ", ";
             blocks.push_back(curves[i]);
         }
-        plot += "x with lines lc rgb '#777777' dt 4 title 'proportional to t'\n";
-        fp << plot;
+        fp.script(kit::gp::perturbations, {{"curves", plot}});
         for (const auto& c : blocks) fp.data(c);
-        fp << "unset logscale x\nset title 'the most unstable body of the map: d, and the Floquet growth |μ|^{t/P}'\n"
-              "set ylabel 'd'\nset yrange [1e-9:10]\nset xrange [0:80]\nset key bottom right\n";
-        plot = "plot ";
+        plot.clear();
         blocks.clear();
         const double g = rows[first][7];
         for (std::size_t i = first; i < curves.size(); ++i) {
@@ -468,9 +453,9 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
                     kit::quoted("δ = 10^{" + std::to_string(std::lround(std::log10(rows[i][1]))) + "}") + ", ";
             blocks.push_back(curves[i]);
         }
-        std::ostringstream guide;
-        guide << "1e-6*exp(" << g << "*x) with lines lc rgb '#777777' dt 4 title 'δ |μ|^{t/P}, δ = 10^{-6}'\n";
-        fp << plot << guide.str();
+        std::ostringstream growth;
+        growth << g;
+        fp.script(kit::gp::unstable, {{"curves", plot}, {"growth", growth.str()}});
         for (const auto& c : blocks) fp.data(c);
         fp << "unset multiplot\n";
         fp.finish();

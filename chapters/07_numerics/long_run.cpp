@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "long_run.gp.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/integrators.hpp"
 #include "rigid/numerics.hpp"
@@ -220,31 +221,20 @@ void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks
     const double h = pb.h, period = pb.period;
     kit::Figure fig(scene, "long_run.svg", 1450, 900);
     if (!fig.enabled()) return;
-    // One key for the four panels, on their right (the colours are the same in each; the
-    // orthogonality panel has every curve and Brouwer's line, so it draws the key).
-    fig << "set multiplot layout 2, 2 margins 0.07, 0.77, 0.07, 0.92 spacing 0.08, 0.14 title " +
-               kit::quoted("Grioli (1, 1.5, 2): " + std::to_string(N) + " steps of h = 1/16 (" +
-                           std::to_string(long(N * h / period)) + " periods)") +
-               "\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'time (periods)'\n"
-               "";
+    fig.script(kit::gp::long_run,
+               {{"title", kit::quoted("Grioli (1, 1.5, 2): " + std::to_string(N) + " steps of h = 1/16 (" +
+                                      std::to_string(long(N * h / period)) + " periods)")}});
     const char* panels[4][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
                                 {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
                                 {"orthogonality ‖R^T R − 1‖_F", "defect"},
                                 {"angle between R and the exact R (rad)", "error"}};
     for (int p = 0; p < 4; ++p) {
-        fig << "set title " + kit::quoted(panels[p][0]) + "\nset ylabel " + kit::quoted(panels[p][1]) + "\n" +
-                   (p == 2 ? "set yrange [1e-17:1]\n" : "set yrange [1e-17:10]\n") +
-                   (p == 2 ? "set key at screen 0.785, 0.5 left center vertical font ',10' spacing 1.3 width -1\n"
-                           : "unset key\n");
-        std::string plot = "plot ";
+        std::string curves;
         for (const Track& tr : tracks)
-            plot += "'-' with lines " + tr.style + " lw 1.6 title " + kit::quoted(tr.label) + ", ";
-        if (p == 2) {
-            // Brouwer's law: a random walk of one rounding per step.
-            plot += "'-' with lines lc rgb '#777777' dt 4 lw 1 title 'ε √(steps)', ";
-        }
-        plot.resize(plot.size() - 2);
-        fig << plot << "\n";
+            curves += std::string(curves.empty() ? "" : ", ") + "'-' with lines " + tr.style + " lw 1.6 title " +
+                      kit::quoted(tr.label);
+        fig.script(p == 2 ? kit::gp::key_panel : kit::gp::panel,
+                   {{"title", kit::quoted(panels[p][0])}, {"ylabel", kit::quoted(panels[p][1])}, {"curves", curves}});
         for (const Track& tr : tracks) {
             std::vector<std::vector<double>> rows;
             for (const auto& r : tr.rows) rows.push_back({r[0], std::max(r[2 + p], 1e-17)});

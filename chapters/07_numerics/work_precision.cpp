@@ -21,6 +21,7 @@
 #include "bench.hpp"
 #include "figure.hpp"
 #include "scene.hpp"
+#include "work_precision.gp.hpp"
 
 namespace {
 
@@ -411,27 +412,19 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
                 if (!p.failed) t_min = std::min(t_min, p.time_s), t_max = std::max(t_max, p.time_s);
         if (t_max <= 0) continue;
         const double top = 1 - 50.0 / height_px, height = top - 55.0 / height_px;
-        fig << "set multiplot title " + kit::quoted(sc.title + ": error against run time") +
-                   "\n"
-                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-                   "set ylabel 'error: R (rad), Ω (rel.)'\nset yrange [1e-16:10]\nset ytics 100\n"
-                   "set xrange [" +
-                   sci(t_min / 1.5, 3) + ":" + sci(t_max * 1.5, 3) +
-                   "]\n"
-                   "set lmargin at screen 0.1\nset rmargin at screen 0.62\n"
-                   "set key at screen 0.64, graph 1 left top Left reverse font ',10' spacing 1.05 samplen 2.5 nobox\n";
+        fig.script(kit::gp::work_precision, {{"title", kit::quoted(sc.title + ": error against run time")},
+                                             {"tmin", sci(t_min / 1.5, 3)},
+                                             {"tmax", sci(t_max * 1.5, 3)}});
         const double floor = refs[sc.name].double_floor;
         for (int k = 0; k < n_panels; ++k) {
             const Panel& panel = by_family[k];
             const double y1 = top - height * k / n_panels, y0 = top - height * (k + 1) / n_panels;
             // The panels share the time axis: its numbers only under the last one.
-            fig << "set tmargin at screen " + std::to_string(y1 - 30.0 / height_px) + "\nset bmargin at screen " +
-                       std::to_string(y0 + 8.0 / height_px) + "\nset title " + kit::quoted(panel.title) +
-                       " font ',11' offset 0, -0.4\n" +
-                       (k + 1 == n_panels
-                            ? "set xlabel 'run time (s), minimum over repetitions'\nset format x '10^{%L}'\n"
-                            : "unset xlabel\nset format x ''\n");
-            std::string plot = "plot ";
+            fig.script(k + 1 == n_panels ? kit::gp::bottom_panel : kit::gp::panel,
+                       {{"top", std::to_string(y1 - 30.0 / height_px)},
+                        {"bottom", std::to_string(y0 + 8.0 / height_px)},
+                        {"title", kit::quoted(panel.title)}});
+            std::string plot;
             std::vector<std::vector<std::vector<double>>> blocks;
             auto curve = [&](const bench::Method& m) {
                 std::vector<std::vector<double>> rows;
@@ -456,9 +449,10 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
                 plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
                 blocks.push_back(rows);
             }
-            plot += sci(floor, 6) + " with lines lc rgb '#777777' dt 2 lw 1.2 title 'double-precision floor', " +
-                    sci(target, 6) + " with lines lc rgb '#aaaaaa' dt 3 lw 1.2 title 'target " + sci(target, 0) + "'\n";
-            fig << plot;
+            fig.script(kit::gp::plot, {{"curves", plot},
+                                       {"floor", sci(floor, 6)},
+                                       {"target", sci(target, 6)},
+                                       {"target_text", sci(target, 0)}});
             for (const auto& rows : blocks) fig.data(rows);
         }
         fig << "unset multiplot\n";
@@ -474,19 +468,12 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
         // key for the three panels, on their right.
         kit::Figure fig(scene, "invariants_grioli_100.svg", 1400, 560);
         if (fig.enabled()) {
-            fig << "set multiplot layout 1, 3 margins 0.06, 0.8, 0.11, 0.86 spacing 0.06, 0 "
-                   "title 'Grioli, 100 periods: what each method keeps (largest over the run)'\n"
-                   "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
-                   "set yrange [1e-17:10]\n";
+            fig.script(kit::gp::invariants);
             for (int panel = 0; panel < 3; ++panel) {
-                fig << (panel == 2
-                            ? "set key at screen 0.815, 0.5 left center Left reverse font ',10' spacing 1.1 nobox\n"
-                            : "unset key\n");
-                fig << (panel == 0 ? "set title 'energy: |H − H(0)| / (T(0) + f)'\nset ylabel 'energy drift'\n"
-                        : panel == 1
-                            ? "set title 'vertical angular momentum ({/:Bold k}, RJΩ)'\nset ylabel 'drift / |JΩ(0)|'\n"
-                            : "set title 'orthogonality: ‖R^T R − 1‖_F'\nset ylabel 'orthogonality defect'\n");
-                std::string plot = "plot ";
+                const char* titles[3][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
+                                            {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
+                                            {"orthogonality: ‖R^T R − 1‖_F", "orthogonality defect"}};
+                std::string plot;
                 std::vector<std::vector<std::vector<double>>> blocks;
                 for (const Panel& family : by_family)
                     for (std::size_t i = 0; i < family.methods.size(); ++i) {
@@ -499,12 +486,14 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
                                                                                 : p.m.orth,
                                                                    1e-17)});
                         if (rows.empty()) continue;
-                        plot += "'-' with linespoints " + style(family, i) + " lw 1.4 ps 0.6 title " +
-                                kit::quoted(m.name) + ", ";
+                        plot += std::string(plot.empty() ? "" : ", ") + "'-' with linespoints " + style(family, i) +
+                                " lw 1.4 ps 0.6 title " + kit::quoted(m.name);
                         blocks.push_back(rows);
                     }
-                plot.resize(plot.size() - 2);
-                fig << plot << "\n";
+                fig.script(panel == 2 ? kit::gp::invariants_key_panel : kit::gp::invariants_panel,
+                           {{"title", kit::quoted(titles[panel][0])},
+                            {"ylabel", kit::quoted(titles[panel][1])},
+                            {"curves", plot}});
                 for (const auto& rows : blocks) fig.data(rows);
             }
             fig << "unset multiplot\n";

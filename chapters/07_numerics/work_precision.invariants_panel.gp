@@ -1,0 +1,4 @@
+unset key
+set title @title@
+set ylabel @ylabel@
+plot @curves@
