@@ -6,10 +6,12 @@
 // alignment, and the 90-degree start.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "aligning_spin.gp.hpp"
 #include "figure.hpp"
 #include "quantized_scene.hpp"
 #include "rigid/ode.hpp"
@@ -22,6 +24,13 @@ using rigid::VecX;
 using std::numbers::pi;
 
 namespace {
+
+// A number as printf's %g writes it (the figures' titles and keys).
+std::string gnum(double x) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", x);
+    return s;
+}
 
 Vec3 vec(const VecX& y) { return Vec3(y(0), y(1), y(2)); }
 VecX vecx(const Vec3& v) { return VecX{{v(0), v(1), v(2)}}; }
@@ -195,21 +204,16 @@ void report_alignment(kit::Report& report, const Setup& u) {
 void draw_angles(kit::Scene& scene, const Setup& u, const Fan& f) {
     kit::Figure fig(scene, "spin_alignment.svg", 820, 520);
     if (!fig.enabled()) return;
-    char head[200];
-    std::snprintf(
-        head, sizeof head,
-        "set title '(6.2) with β = %g, |{/:Bold B}| = %g, e/mc = %g: the angle between {/:Bold S} and {/:Bold B}'\n",
-        u.field.beta, u.Bn, u.field.e_over_mc);
-    std::string cmd = std::string(head) +
-                      "set xlabel 't'\nset ylabel 'angle (degrees)'\nset yrange [0:180]\nset ytics 30\n"
-                      "set key outside right top font ',9'\nplot ";
+    std::string curves;
     for (std::size_t j = 0; j < f.degrees.size(); ++j)
-        cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j % 8 + 1) + " lw 2 " +
-               (j == 0 ? "title '(6.2)'" : "notitle");
+        curves += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j % 8 + 1) + " lw 2 " +
+                  (j == 0 ? "title '(6.2)'" : "notitle");
     for (std::size_t j = 0; j < f.degrees.size(); ++j)
-        cmd +=
+        curves +=
             ", '-' with lines ls " + std::to_string(j % 8 + 1) + " dt 2 lw 1 " + (j == 0 ? "title 'β = 0'" : "notitle");
-    fig << cmd + "\n";
+    fig.script(
+        kit::gp::alignment,
+        {{"beta", gnum(u.field.beta)}, {"B", gnum(u.Bn)}, {"e_over_mc", gnum(u.field.e_over_mc)}, {"curves", curves}});
     for (const auto& c : f.angle_curves) fig.data(c);
     for (const auto& c : f.plain_curves) fig.data(c);
     fig.finish();
@@ -243,11 +247,6 @@ void draw_sphere(kit::Scene& scene, const Setup& u) {
     if (!fs.enabled()) return;
     // Draw in coordinates (e1, e2, b), so that B points up.
     auto local = [&](const Vec3& v) { return std::vector<double>{v.dot(u.e1), v.dot(u.e2), v.dot(u.b)}; };
-    fs << "set view 70, 25, 1.45, 1.45\nset view equal xyz\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\nset "
-          "zrange [-1.05:1.45]\nunset border\nunset tics\nunset grid\n"
-          "set xyplane 0\nset key at screen 0.99, 0.99 top right font ',9'\nset margins 0, 0, 0, 0\n"
-          "set arrow from 0, 0, 1 to 0, 0, 1.4 head filled lw 3 lc rgb 'black'\n"
-          "set label 'B' at 0.08, 0, 1.35 font ',14'\n";
     const std::vector<std::vector<double>> sphere = sphere_grid();
     std::vector<double> shown{30, 80, 100, 150};
     std::vector<std::vector<std::vector<double>>> paths;
@@ -262,15 +261,11 @@ void draw_sphere(kit::Scene& scene, const Setup& u) {
     std::vector<std::vector<double>> circle;  // beta = 0 from 60 degrees: one circle
     for (int k = 0; k <= 120; ++k)
         circle.push_back(local(rigid::spin_exact(u.plain, u.start(60), u.period * k / 120) / u.s));
-    std::string cmd =
-        "splot '-' with lines lc rgb '#cccccc' lw 0.7 notitle, "
-        "'-' with lines lc rgb 'black' dt 2 lw 1.5 title 'β = 0 from 60°'";
-    for (std::size_t j = 0; j < shown.size(); ++j) {
-        char t[64];
-        std::snprintf(t, sizeof t, "(6.2) from %g degrees", shown[j]);
-        cmd += ", '-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + t + "'";
-    }
-    fs << cmd + "\n";
+    std::string curves;
+    for (std::size_t j = 0; j < shown.size(); ++j)
+        curves +=
+            ", '-' with lines ls " + std::to_string(j + 1) + " lw 2 title '(6.2) from " + gnum(shown[j]) + " degrees'";
+    fs.script(kit::gp::sphere, {{"paths", curves}});
     fs.data(sphere).data(circle);
     for (const auto& p : paths) fs.data(p);
     fs.finish();

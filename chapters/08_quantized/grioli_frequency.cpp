@@ -6,11 +6,13 @@
 // the regular precession R^b(lambda alpha t) R^a(lambda alpha t) only for lambda = +1 and -1.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "figure.hpp"
+#include "grioli_frequency.gp.hpp"
 #include "heavy_body.hpp"
 #include "precession.hpp"
 #include "rigid/grioli.hpp"
@@ -25,6 +27,13 @@ using rigid::VecX;
 using std::numbers::pi;
 
 namespace {
+
+// A number as printf's %g writes it (the figures' titles and keys).
+std::string gnum(double x) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", x);
+    return s;
+}
 
 // snippet: ch08_off_frequency
 // The body of Theorem 1 started from R(0) = 1 with Omega(0) = lambda Omega_ccw(0): the largest
@@ -176,19 +185,7 @@ void report_scaling(kit::Scene& scene, const Scaling& s) {
 void draw_map(kit::Scene& scene, const rigid::Moments& body, const Map& map, const Checked& checked) {
     kit::Figure fig(scene, "grioli_alpha_map.svg", 760, 520);
     if (!fig.enabled()) return;
-    fig << "set title 'The Grioli frequency α\u00a0(C/f)^{1/2}\u00a0= (S/C)^{-1/2}\u00a0over the admissible "
-           "bodies'\n"
-           "set xlabel 'A / C'\nset ylabel 'B / C'\nset xrange [0:1]\nset yrange [0.45:1.02]\nset size ratio "
-           "-1\n"
-           "set cbrange [1:2.2]\nset cblabel 'α\u00a0(C/f)^{1/2}'\n"
-           "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21908d', 3 '#5dc963', 4 '#fde725')\n"
-           "set key at graph 0.98, graph 0.12 right bottom font ',9' opaque box\n"
-           "set label 'A + B = C (flat)' at 0.12, 0.72 rotate by -45 font ',10'\n"
-           "set label 'A = B' at 0.8, 0.76 rotate by 45 font ',10'\n"
-           "set label 'B = C' at 0.55, 1.01 font ',10'\n"
-           "plot '-' with image pixels notitle, '-' with lines lc rgb 'black' lw 1.5 notitle, "
-           "'-' with points pt 6 ps 1.2 lc rgb 'black' title 'integrated in both senses', "
-           "'-' with points pt 7 ps 1.8 lc rgb '#d55e00' title 'the body of part (b)'\n";
+    fig.script(kit::gp::alpha_map);
     std::vector<std::vector<double>> pts;
     for (const auto& r : checked.rows) pts.push_back({r[0], r[1]});
     fig.data(map.points)
@@ -201,19 +198,7 @@ void draw_map(kit::Scene& scene, const rigid::Moments& body, const Map& map, con
 void draw_senses(kit::Scene& scene, const rigid::Moments& body, const Scaling& s) {
     kit::Figure fl(scene, "grioli_two_senses.svg", 820, 480);
     if (!fl.enabled()) return;
-    char head[200];
-    std::snprintf(head, sizeof head,
-                  "set title 'Ω(0) scaled by λ: distance from R^b(λαt)\u00a0R^a(λαt), "
-                  "two periods, body (%g, %g, %g)'\n",
-                  body.A, body.B, body.C);
-    fl << std::string(head) +
-              "set xlabel 'λ'\nset ylabel 'max geodesic angle (rad)'\nset logscale y\nset format y '10^{%L}'\n"
-              "set yrange [1e-15:10]\nset xrange [-1.65:1.65]\nset key bottom center font ',9'\n"
-              "set arrow from -1, graph 0 to -1, graph 1 nohead dt 3 lc rgb '#999999'\n"
-              "set arrow from 1, graph 0 to 1, graph 1 nohead dt 3 lc rgb '#999999'\n"
-              "set label 'clockwise' at -1.05, 1e-14 right font ',10'\nset label 'counter-clockwise' at 1.05, "
-              "1e-14 font ',10'\n"
-              "unset key\nplot '-' with linespoints ls 1 pt 7 ps 0.5 notitle\n";
+    fl.script(kit::gp::two_senses, {{"A", gnum(body.A)}, {"B", gnum(body.B)}, {"C", gnum(body.C)}});
     std::vector<std::vector<double>> both;  // the two branches, with a break (an empty row)
     for (const auto& r : s.sweep)
         if (r[0] < 0) both.push_back({r[0], std::max(r[1], 1e-16)});

@@ -5,11 +5,13 @@
 // the averaged energy equation dE/dt = -k(E) E / m.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "figure.hpp"
+#include "level_oscillator.gp.hpp"
 #include "quantized_scene.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/quantized.hpp"
@@ -18,6 +20,13 @@
 using rigid::VecX;
 
 namespace {
+
+// A number as printf's %g writes it (the figures' titles and keys).
+std::string gnum(double x) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", x);
+    return s;
+}
 
 // The scene's own parameters, bound to its options (the oscillator's are scene8's).
 struct Params {
@@ -195,26 +204,21 @@ void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
     const auto &curves = S.curves, &averaged = S.averaged;
     kit::Figure fig(scene, "level_settling.svg", 820, 520);
     if (fig.enabled()) {
-        char head[160];
-        std::snprintf(head, sizeof head,
-                      "set title 'The oscillator (6.1) with k(E) = %g |sin(πE/E_{0})|^{%g}: energy against time'\n",
-                      k.kappa, k.power);
-        std::string cmd = std::string(head) + "set xrange [0:" + std::to_string(std::min(T, 40.0)) +
-                          "]\nset xlabel 't'\nset ylabel 'E / E_{0}'\nset key outside right top font ',9'\n"
-                          "set yrange [0:" +
-                          std::to_string(levels + 0.2) + "]\n";
-        for (int n = 0; n <= levels; ++n)
-            cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
-                   " nohead dt 3 lc rgb '#999999'\n";
-        cmd += "plot ";
+        std::string plot, averaged_curves;
         for (std::size_t j = 0; j < starts.size(); ++j) {
             char title[64];
             std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}", starts[j]);
-            cmd += "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "', ";
+            plot += "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "', ";
         }
-        cmd += "'-' with lines lc rgb 'black' dt 2 lw 1 title 'averaged: dE/dt = -k(E) E/m'";
-        for (std::size_t j = 1; j < starts.size(); ++j) cmd += ", '-' with lines lc rgb 'black' dt 2 lw 1 notitle";
-        fig << cmd + "\n";
+        for (std::size_t j = 1; j < starts.size(); ++j)
+            averaged_curves += ", '-' with lines lc rgb 'black' dt 2 lw 1 notitle";
+        fig.script(kit::gp::settling, {{"kappa", gnum(k.kappa)},
+                                       {"power", gnum(k.power)},
+                                       {"tmax", std::to_string(std::min(T, 40.0))},
+                                       {"Emax", std::to_string(levels + 0.2)},
+                                       {"levels", std::to_string(levels)},
+                                       {"curves", plot},
+                                       {"averaged", averaged_curves}});
         for (const auto& c : curves) fig.data(c);
         for (const auto& a : averaged) fig.data(a);
         fig.finish();
@@ -228,12 +232,7 @@ void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
     const auto &approach = S.approach, &asymptote = S.asymptote;
     kit::Figure fa(scene, "level_approach.svg", 820, 520);
     if (fa.enabled()) {
-        std::string cmd =
-            "set title 'Approach to the levels: E(t) - E_{n}\u00a0(solid), the averaged asymptote (dashed)'\n"
-            "set xrange [1:" +
-            std::to_string(T) +
-            "]\nset logscale xy\nset format y '10^{%L}'\nset xlabel 't'\nset ylabel '(E - E_{n}) / E_{0}'\n"
-            "set key outside right top font ',9'\nplot ";
+        std::string cmd;
         for (std::size_t j = 0; j < starts.size(); ++j) {
             char title[64];
             std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}\u00a0settles on %g E_{0}", starts[j], rows[j][1]);
@@ -242,7 +241,7 @@ void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
         }
         for (std::size_t j = 0; j < starts.size(); ++j)
             if (!asymptote[j].empty()) cmd += ", '-' with lines ls " + std::to_string(j + 1) + " dt 2 lw 1 notitle";
-        fa << cmd + "\n";
+        fa.script(kit::gp::approach, {{"T", std::to_string(T)}, {"curves", cmd}});
         for (const auto& d : approach) fa.data(d);
         for (const auto& as : asymptote)
             if (!as.empty()) fa.data(as);

@@ -8,10 +8,12 @@
 // of friction integrated alongside.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "figure.hpp"
+#include "level_transitions.gp.hpp"
 #include "quantized_scene.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/quantized.hpp"
@@ -20,6 +22,13 @@
 using rigid::VecX;
 
 namespace {
+
+// A number as printf's %g writes it (the figures' titles and keys).
+std::string gnum(double x) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", x);
+    return s;
+}
 
 // The time at which E(t) first falls below `below`, by linear interpolation on the output grid
 // (NaN when it never does before times.back()), integrated by rk8pd at the tolerance `tol`.
@@ -275,22 +284,15 @@ void draw_kicks(kit::Scene& scene, const Setup& u, const Kicked& kd) {
     const auto& traces = kd.traces;
     kit::Figure fig(scene, "level_transitions.svg", 820, 520);
     if (fig.enabled()) {
-        char head[200];
-        std::snprintf(head, sizeof head,
-                      "set title 'Kicks q'' += %g N(0,1) every %g, starting on E = %d E_{0}: energy against time'\n",
-                      eps, tau, n_start);
-        std::string cmd =
-            std::string(head) +
-            "set xlabel 't'\nset ylabel 'E / E_{0}'\nset key at graph 0.98, graph 0.8 right top font ',9' box opaque\n"
-            "set yrange [0:" +
-            std::to_string(n_start + 0.4) + "]\n";
-        for (int n = 0; n <= n_start; ++n)
-            cmd += "set arrow from graph 0, first " + std::to_string(n) + " to graph 1, first " + std::to_string(n) +
-                   " nohead dt 3 lc rgb '#999999'\n";
-        cmd += "plot '-' with lines lc rgb 'black' dt 2 lw 2 title 'no kicks'";
+        std::string seed_curves;
         for (int s = 1; s <= seeds; ++s)
-            cmd += ", '-' with lines ls " + std::to_string(s) + " lw 1.5 title 'kicks, seed " + std::to_string(s) + "'";
-        fig << cmd + "\n";
+            seed_curves +=
+                ", '-' with lines ls " + std::to_string(s) + " lw 1.5 title 'kicks, seed " + std::to_string(s) + "'";
+        fig.script(kit::gp::kicks, {{"eps", gnum(eps)},
+                                    {"tau", gnum(tau)},
+                                    {"n_start", std::to_string(n_start)},
+                                    {"Emax", std::to_string(n_start + 0.4)},
+                                    {"seeds", seed_curves}});
         for (int s = 0; s <= seeds; ++s) fig.data(traces[s].curve);
         fig.finish();
     }
@@ -301,10 +303,7 @@ void draw_escapes(kit::Scene& scene, const Escapes& es) {
     const auto& powers = es.powers;
     kit::Figure fe(scene, "level_escape.svg", 820, 520);
     if (fe.enabled()) {
-        fe << "set title 'Leaving the level E_{n}\u00a0= 2 E_{0}\u00a0after one disturbance δ\u00a0below it'\n"
-              "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'δ\u00a0/ E_{0}'\n"
-              "set ylabel 'time to fall below E_{n}\u00a0- E_{0}/2'\nset key top right font ',9'\n";
-        std::string cmd = "plot ";
+        std::string cmd;
         for (std::size_t j = 0; j < powers.size(); ++j) {
             char t1[80], t2[80];
             std::snprintf(t1, sizeof t1, "p = %g, (6.1) integrated", powers[j]);
@@ -312,7 +311,7 @@ void draw_escapes(kit::Scene& scene, const Escapes& es) {
             cmd += std::string(j ? ", " : "") + "'-' with points ls " + std::to_string(j + 1) + " pt 7 ps 1.2 title '" +
                    t1 + "', '-' with lines ls " + std::to_string(j + 1) + " dt 2 title '" + t2 + "'";
         }
-        fe << cmd + "\n";
+        fe.script(kit::gp::escape, {{"curves", cmd}});
         for (double p : powers) {
             std::vector<std::vector<double>> pts, line;
             for (const auto& r : escape)

@@ -12,6 +12,7 @@
 
 #include "figure.hpp"
 #include "quantized_scene.hpp"
+#include "quantized_work_precision.gp.hpp"
 #include "rigid/ode.hpp"
 #include "rigid/quantized.hpp"
 #include "scene.hpp"
@@ -160,17 +161,12 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<Problem>& proble
           const std::vector<std::vector<double>>& rows) {
     kit::Figure fig(scene, "quantized_work_precision.svg", 1200, 430);
     if (!fig.enabled()) return;
-    fig << "set multiplot layout 1, 3 title 'Error against run time (min over repetitions), T = " +
-               std::to_string(int(p.T)) +
-               "'\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'run time (s)'\n"
-               "";
+    fig.script(kit::gp::quantized_work_precision, {{"T", std::to_string(int(p.T))}});
     for (std::size_t k = 0; k < problems.size(); ++k) {
-        fig << std::string(k == 1 ? "set key top right font ',9'\n" : "unset key\n");  // one key, where there is room
-        fig << "set title " + kit::quoted(problems[k].name) + "\nset ylabel " +
-                   kit::quoted(k == 0 ? "max error (relative)" : "") +
-                   "\nplot '-' with linespoints ls 1 title 'student RK4, h = 0.2 ... 0.001', "
-                   "'-' with linespoints ls 2 title 'GSL rkf45, tol = 1e-4 ... 1e-13', "
-                   "'-' with linespoints ls 3 title 'GSL rk8pd, tol = 1e-4 ... 1e-14'\n";
+        // One key, where there is room.
+        fig.script(
+            k == 1 ? kit::gp::key_panel : kit::gp::panel,
+            {{"title", kit::quoted(problems[k].name)}, {"ylabel", kit::quoted(k == 0 ? "max error (relative)" : "")}});
         for (int id = 0; id < 3; ++id) {
             std::vector<std::vector<double>> pts;
             for (const auto& r : rows)
