@@ -100,11 +100,7 @@ endif()
 # Still over the limit, each "path: function 'name'" with the reason; the list may only shrink (a
 # function listed here that is short now fails the test until it is taken off). Empty: every
 # function is short.
-set(known_long
-    # Drawing functions that hold their gnuplot script in C++ strings: they shrink when the scripts
-    # move into .gp files beside their scenes (DESIGN.md, "Figures"), which another change does.
-    "chapters/07_numerics/work_precision.cpp: function 'draw_work_precision'"
-    "chapters/kit/motion.cpp: function 'write_gif'")
+set(known_long)
 
 set(files "")
 foreach(folder IN ITEMS chapters exercises/provided cmake/tools tests/grading)

@@ -391,6 +391,41 @@ void report_rhs_cost(kit::Scene& scene, const Sweeps& w) {
     scene.report.add("wall_time_s", w.elapsed_s);
 }
 
+// One panel of a work-precision diagram: its family's methods (a method with no run that finished
+// keeps its line in the key), and rk8pd in grey where it is not one of them.
+void draw_panel(kit::Figure& fig, const Panel& panel, std::map<std::string, std::vector<bench::Point>>& by_method,
+                double floor, double target) {
+    std::string plot;
+    std::vector<std::vector<std::vector<double>>> blocks;
+    auto curve = [&](const bench::Method& m) {
+        std::vector<std::vector<double>> rows;
+        for (const bench::Point& p : by_method[m.name])
+            if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
+        return rows;
+    };
+    bool has_rk8pd = false;
+    for (std::size_t i = 0; i < panel.methods.size(); ++i) {
+        const bench::Method& m = *panel.methods[i];
+        has_rk8pd = has_rk8pd || m.name == "rk8pd";
+        auto rows = curve(m);
+        // A method with no run that finished still has its line in the key.
+        plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
+                kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
+        if (rows.empty()) rows.push_back({1e300, 1e300});
+        blocks.push_back(rows);
+    }
+    if (!has_rk8pd) {
+        auto rows = curve(bench::method("rk8pd"));
+        if (rows.empty()) rows.push_back({1e300, 1e300});
+        plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
+        blocks.push_back(rows);
+    }
+    fig.script(
+        kit::gp::plot,
+        {{"curves", plot}, {"floor", sci(floor, 6)}, {"target", sci(target, 6)}, {"target_text", sci(target, 0)}});
+    for (const auto& rows : blocks) fig.data(rows);
+}
+
 void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
     const double target = w.target;
     const auto& all = w.all;
@@ -424,36 +459,7 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
                        {{"top", std::to_string(y1 - 30.0 / height_px)},
                         {"bottom", std::to_string(y0 + 8.0 / height_px)},
                         {"title", kit::quoted(panel.title)}});
-            std::string plot;
-            std::vector<std::vector<std::vector<double>>> blocks;
-            auto curve = [&](const bench::Method& m) {
-                std::vector<std::vector<double>> rows;
-                for (const bench::Point& p : points[sc.name][m.name])
-                    if (!p.failed) rows.push_back({p.time_s, std::max(p.m.error, 1e-16)});
-                return rows;
-            };
-            bool has_rk8pd = false;
-            for (std::size_t i = 0; i < panel.methods.size(); ++i) {
-                const bench::Method& m = *panel.methods[i];
-                has_rk8pd = has_rk8pd || m.name == "rk8pd";
-                auto rows = curve(m);
-                // A method with no run that finished still has its line in the key.
-                plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
-                        kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
-                if (rows.empty()) rows.push_back({1e300, 1e300});
-                blocks.push_back(rows);
-            }
-            if (!has_rk8pd) {
-                auto rows = curve(bench::method("rk8pd"));
-                if (rows.empty()) rows.push_back({1e300, 1e300});
-                plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
-                blocks.push_back(rows);
-            }
-            fig.script(kit::gp::plot, {{"curves", plot},
-                                       {"floor", sci(floor, 6)},
-                                       {"target", sci(target, 6)},
-                                       {"target_text", sci(target, 0)}});
-            for (const auto& rows : blocks) fig.data(rows);
+            draw_panel(fig, panel, points[sc.name], floor, target);
         }
         fig << "unset multiplot\n";
         fig.finish();
