@@ -2,11 +2,12 @@
 #include "figure.hpp"
 
 #include <fmt/format.h>
+#include <gnuplot-iostream.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iterator>
+#include <iomanip>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -136,18 +137,15 @@ Figure& Figure::operator<<(const std::string& commands) {
     return *this;
 }
 
-// 19 significant digits, as gnuplot-iostream's send1d wrote them: gnuplot reads back the very
-// doubles.
+// An inline data block as gnuplot-iostream's send1d writes one (its text sender, into the script
+// rather than down its pipe, which it would open through a shell): scientific with 18 digits after
+// the point, so that gnuplot reads back the very doubles; an empty row is a blank line.
 Figure& Figure::data(const std::vector<std::vector<double>>& rows) {
     if (!enabled_) return *this;
-    for (const auto& row : rows) {
-        for (std::size_t j = 0; j < row.size(); ++j) {
-            if (j) text_ += ' ';
-            fmt::format_to(std::back_inserter(text_), "{:.18e}", row[j]);
-        }
-        text_ += '\n';
-    }
-    text_ += "e\n";
+    std::ostringstream block;
+    block << std::scientific << std::setprecision(18);
+    gnuplotio::top_level_array_sender(block, rows, gnuplotio::Mode1D(), gnuplotio::ModeText());
+    text_ += block.str() + "e\n";
     return *this;
 }
 

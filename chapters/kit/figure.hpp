@@ -7,7 +7,7 @@
 //   #include "omega_finite_difference.gp.hpp"  // kit::gp::error_vs_step, one per .gp (generated)
 //   kit::Figure fig(scene, "omega_error.svg");
 //   fig.script(kit::gp::error_vs_step, {{"title", title}});
-//   fig.data(rows);          // one inline data block, ended by 'e'
+//   fig.data(rows);          // one inline data block, ended by 'e' (gnuplot-iostream's send1d text)
 //   fig.finish();            // runs gnuplot, checks the file, stages it
 //
 // The scripts: every <scene>.<figure>.gp (or <scene>.gp) in a scene's folder becomes
