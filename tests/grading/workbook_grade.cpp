@@ -8,7 +8,8 @@
 // grade: one folder per student in <submissions>, each holding exercises/*.cpp (or the .cpp
 // files directly). Writes <out>/results/<student>.json (Gradescope's results.json),
 // <out>/class.csv, <out>/summary.md, <out>/canvas.csv and <out>/moodle.csv (the LMS imports),
-// <out>/similarity.md and .csv (similarity.cpp; the same as the similarity command writes) and
+// <out>/similarity.md and .csv (similarity.cpp; the same as the similarity command writes),
+// <out>/item_analysis.md and .csv and <out>/class_report.html (item_analysis.hpp) and
 // <out>/run.json (timings: the only file that changes from run to run). Submissions are graded in parallel, each in its
 // own worker process; a submission whose result is already there for the same inputs is not graded again.
 #include <fcntl.h>
@@ -35,6 +36,7 @@
 #include <map>
 
 #include "grading.hpp"
+#include "item_analysis.hpp"
 
 using namespace grading;
 
@@ -227,6 +229,7 @@ void write_class_files(const Setup& setup, const Args& a, const std::string& out
     const std::size_t listed = write_similarity(setup, files, out);
     std::printf("Similarity: %zu submissions match the reference or one another on some exercise (%s/similarity.md)\n",
                 listed, out.c_str());
+    std::printf("%s\n", write_item_analysis(setup, results, files, out).c_str());  // item_analysis.hpp
 }
 
 // ---- similarity ----------------------------------------------------------------------------------

@@ -1,0 +1,209 @@
+// class_report.html and its plots: the item analysis as a page (item_analysis.hpp). The plots are
+// SVG files in <out>/report/, each drawn by gnuplot from a script and a data file written beside
+// it (support::run, an argument vector: no shell). Without gnuplot the page says so and keeps the
+// tables. The page needs nothing from outside the out folder: no script, font or stylesheet.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "item_analysis.hpp"
+#include "support/process.hpp"
+
+namespace grading {
+
+namespace {
+
+std::string html(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
+    }
+    return out;
+}
+
+// A path as a gnuplot single-quoted string ('' is a quote inside one).
+std::string quoted(const std::string& s) { return "'" + replace_all(s, "'", "''") + "'"; }
+
+std::string fixed(double x, int digits = 2) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, x);
+    return std::string(text) == "-0.00" ? "0.00" : text;
+}
+
+const char* terminal = "set terminal svg size %d,%d noenhanced font 'sans,12' background '#ffffff'\n";
+
+std::string head(const std::string& dir, const std::string& name, int width, int height) {
+    char term[160];
+    std::snprintf(term, sizeof term, terminal, width, height);
+    return std::string(term) + "set output " + quoted(dir + "/" + name + ".svg") + "\nset datafile separator '\\t'\n" +
+           "set style fill solid 0.85 border rgb '#333333'\nset grid ytics lc rgb '#dddddd'\n";
+}
+
+// A plot: its data and script in dir, drawn by gnuplot. Returns "" or what went wrong.
+std::string draw(const std::string& dir, const std::string& name, const std::string& data, const std::string& script) {
+    if (!write_file(dir + "/" + name + ".dat", data) || !write_file(dir + "/" + name + ".gp", script))
+        return "cannot write " + dir + "/" + name + ".gp";
+    support::RunOptions options;
+    options.timeout = 120;
+    const support::Result r = support::run({"gnuplot", dir + "/" + name + ".gp"}, options);
+    if (r.status == -1) return "gnuplot could not start (" + r.error + ")";
+    if (r.status != 0) return "gnuplot failed on " + name + ".gp: " + first_lines(r.err, 300);
+    return {};
+}
+
+std::string plot_totals(const ItemAnalysis& a, const std::string& dir) {
+    const double width = std::max(1.0, std::ceil(a.max_total / 40));
+    const int bins = std::max(1, static_cast<int>(std::ceil(a.max_total / width)));
+    std::vector<int> count(static_cast<std::size_t>(bins), 0);
+    for (const double t : a.totals)
+        ++count[static_cast<std::size_t>(std::clamp(static_cast<int>(t / width), 0, bins - 1))];
+    std::string data = "# bin start\tsubmissions (the last bin includes the maximum)\n";
+    for (int k = 0; k < bins; ++k)
+        data += format_number(k * width) + "\t" + std::to_string(count[static_cast<std::size_t>(k)]) + "\n";
+    std::string script = head(dir, "totals", 900, 360);
+    script += "set title 'Totals of " + std::to_string(a.submissions) + " submissions (of " +
+              format_number(a.max_total) + " points)'\nset xlabel 'total score (points)'\nset ylabel 'submissions'\n" +
+              "set boxwidth " + format_number(width * 0.9) +
+              " absolute\nset yrange [0:*]\nset xrange [0:" + format_number(bins * width) + "]\nplot " +
+              quoted(dir + "/totals.dat") + " using ($1+" + format_number(width / 2) +
+              "):2 with boxes lc rgb '#4477aa' notitle\n";
+    return draw(dir, "totals", data, script);
+}
+
+std::string plot_exercises(const ItemAnalysis& a, const std::string& dir) {
+    std::string data = "# index\texercise\tshare passing every test\tshare started\n";
+    const double n = std::max(1, a.submissions);
+    for (std::size_t k = 0; k < a.exercises.size(); ++k)
+        data += std::to_string(k) + "\t" + a.exercises[k].exercise + "\t" + fixed(a.exercises[k].passed / n, 4) + "\t" +
+                fixed(a.exercises[k].started / n, 4) + "\n";
+    const int width = std::max(900, 14 * static_cast<int>(a.exercises.size()) + 160);
+    std::string script = head(dir, "exercises", width, 560);
+    script +=
+        "set title 'Each exercise: the share of submissions that pass every test, and that started it'\n"
+        "set xtics rotate by -60 font ',9'\nset yrange [0:1.1]\nset ylabel 'share of submissions'\n"
+        "set boxwidth 0.7\nset key top right\nset bmargin 11\nset lmargin 10\n"
+        "plot " +
+        quoted(dir + "/exercises.dat") +
+        " using 1:3:xtic(2) with boxes lc rgb '#228833' title 'pass every test', '' using 1:4 with points pt 7 "
+        "ps 0.7 lc rgb '#cc3311' title 'started'\n";
+    return draw(dir, "exercises", data, script);
+}
+
+std::string plot_tests(const ItemAnalysis& a, const std::string& topic, const std::string& dir) {
+    std::string data = "# number\ttest\tpass\tfail\tcrash or timeout\tbuild error or missing\tnot started\n";
+    int k = 0;
+    for (const auto& r : a.tests) {
+        if (r.topic != topic) continue;
+        const double n = std::max(1, r.results);
+        const auto& c = r.counts;  // pass, fail, timeout, crash, build error, missing, not started
+        ++k;
+        data += std::to_string(k) + "\t" + std::to_string(k) + "\t" + fixed(c[0] / n, 4) + "\t" + fixed(c[1] / n, 4) +
+                "\t" + fixed((c[2] + c[3]) / n, 4) + "\t" + fixed((c[4] + c[5]) / n, 4) + "\t" + fixed(c[6] / n, 4) +
+                "\n";
+    }
+    const std::string name = "tests_" + topic;
+    std::string script = head(dir, name, std::max(900, 16 * k + 260), 380);
+    script += "set title 'Tests of " + topic +
+              ": the verdicts of the class (numbered as in the table below)'\n"
+              "set style data histograms\nset style histogram rowstacked\nset boxwidth 0.8\nset yrange [0:1]\n"
+              "set ylabel 'share of submissions'\nset xtics font ',9'\nset key outside right top\n"
+              "plot " +
+              quoted(dir + "/" + name + ".dat") +
+              " using 3:xtic(2) title 'pass' lc rgb '#228833', '' using 4 title 'fail' lc rgb '#ee6677', '' using 5 "
+              "title 'crash or timeout' lc rgb '#aa3377', '' using 6 title 'build error or missing' lc rgb '#bbbbbb', "
+              "'' using 7 title 'not started' lc rgb '#66ccee'\n";
+    return draw(dir, name, data, script);
+}
+
+const char* style =
+    "<style>body{font-family:sans-serif;max-width:1200px;margin:1em auto;padding:0 1em;color:#222}"
+    "img{max-width:100%;height:auto;border:1px solid #ddd}table{border-collapse:collapse;font-size:90%;margin:1em 0}"
+    "td,th{border:1px solid #ccc;padding:2px 6px;vertical-align:top}td.n{text-align:right}"
+    "code{font-size:85%;overflow-wrap:anywhere}.note{background:#fff3cd;padding:.5em 1em}</style>\n";
+
+std::string topic_table(const ItemAnalysis& a, const std::string& topic) {
+    std::string out =
+        "<table><tr><th>#</th><th>Exercise</th><th>Test</th><th>Pass</th><th>Fail</th><th>Timeout</th>"
+        "<th>Crash</th><th>Build error</th><th>Missing</th><th>Not started</th><th>D</th>"
+        "<th>Most common failing check</th><th>Typical value</th></tr>\n";
+    int k = 0;
+    for (const auto& r : a.tests) {
+        if (r.topic != topic) continue;
+        out += "<tr><td class=n>" + std::to_string(++k) + "</td><td><code>" + html(r.exercise) + "</code></td><td>" +
+               html(r.test) + "</td>";
+        for (const int n : r.counts) out += "<td class=n>" + std::to_string(n) + "</td>";
+        out += "<td class=n>" + (r.discrimination ? fixed(*r.discrimination) : "n/a") + "</td><td>" +
+               (r.check.empty() ? "" : "<code>" + html(r.check) + "</code> (" + std::to_string(r.check_count) + ")") +
+               "</td><td>" + (r.typical.empty() ? "" : "<code>" + html(r.typical) + "</code>") + "</td></tr>\n";
+    }
+    return out + "</table>\n";
+}
+
+std::string exercise_table(const ItemAnalysis& a) {
+    std::string out =
+        "<table><tr><th>Chapter</th><th>Exercise</th><th>Points</th><th>Tests</th><th>Started</th>"
+        "<th>Pass every test</th></tr>\n";
+    for (const auto& e : a.exercises)
+        out += "<tr><td>" + html(e.chapter) + "</td><td><code>" + html(e.exercise) + "</code></td><td class=n>" +
+               format_number(e.points) + "</td><td class=n>" + std::to_string(e.tests) + "</td><td class=n>" +
+               std::to_string(e.started) + "</td><td class=n>" + std::to_string(e.passed) + "</td></tr>\n";
+    return out + "</table>\n";
+}
+
+std::string figure(const std::string& name, const std::string& alt, bool drawn) {
+    return drawn ? "<p><img src=\"report/" + name + ".svg\" alt=\"" + html(alt) + "\"></p>\n" : "";
+}
+
+std::string page(const ItemAnalysis& a, const std::vector<std::string>& topics, const std::string& problem) {
+    const bool drawn = problem.empty();
+    std::string out = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class report</title>\n";
+    out += std::string(style) + "</head><body>\n<h1>Class report</h1>\n<p>" + std::to_string(a.submissions) +
+           " submissions, " + std::to_string(a.exercises.size()) + " exercises, " + std::to_string(a.tests.size()) +
+           " tests. The same numbers as tables: <code>item_analysis.md</code> and <code>item_analysis.csv</code>; "
+           "per student: <code>summary.md</code>, <code>results/&lt;student&gt;.json</code>.</p>\n";
+    if (!drawn) out += "<p class=note>No plots: " + html(problem) + ". The tables below hold every number.</p>\n";
+    if (!a.ranking.empty()) out += "<p class=note>Discrimination (D) not computed: " + html(a.ranking) + ".</p>\n";
+    out += "<h2>Totals</h2>\n" + figure("totals", "histogram of the class's total scores", drawn);
+    out += "<h2>Exercises</h2>\n" + figure("exercises", "share of submissions passing each exercise", drawn);
+    out += exercise_table(a);
+    out +=
+        "<p>D is the pass rate of the top third of the class by total minus that of the bottom third "
+        "(ties at a third's boundary share its places); <em>started</em>: the file differs from the stub "
+        "and the exercise's <code>todo</code> is gone (item_analysis.md says exactly how).</p>\n";
+    for (const auto& topic : topics)
+        out += "<h2>Tests of " + html(topic) + "</h2>\n" +
+               figure("tests_" + topic, "verdicts of each test of " + topic, drawn) + topic_table(a, topic);
+    return out + "</body></html>\n";
+}
+
+}  // namespace
+
+std::string write_item_analysis(const Setup& setup, const std::vector<SubmissionResult>& results,
+                                const std::vector<ClassFiles>& files, const std::string& out) {
+    const ItemAnalysis a = analyse_items(setup, results, files);
+    write_file(out + "/item_analysis.csv", item_analysis_csv(a));
+    write_file(out + "/item_analysis.md", item_analysis_markdown(a));
+    const std::string dir = out + "/report";
+    remove_tree(dir);
+    make_dirs(dir);
+    std::vector<std::string> topics;
+    for (const auto& t : setup.topics) topics.push_back(t.name);
+    std::string problem = plot_totals(a, dir);
+    if (problem.empty()) problem = plot_exercises(a, dir);
+    for (const auto& t : topics)
+        if (problem.empty()) problem = plot_tests(a, t, dir);
+    write_file(out + "/class_report.html", page(a, topics, problem));
+    return "Item analysis: " + out + "/item_analysis.md, .csv and " + out + "/class_report.html" +
+           (problem.empty() ? "" : " (no plots: " + problem + ")");
+}
+
+}  // namespace grading
