@@ -604,7 +604,10 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
                                           {"harness", harness_version},
                                           {"fingerprint", r.fingerprint}}},
                                         {"tests", tests}};
-    return json_text(out);
+    if (r.provenance.is_null()) return json_text(out);
+    nlohmann::ordered_json with = out;  // the test environment (provenance.hpp), under extra_data as Gradescope allows
+    with["extra_data"]["provenance"] = r.provenance;
+    return json_text(with);
 }
 
 namespace {

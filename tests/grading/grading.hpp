@@ -256,6 +256,7 @@ struct SubmissionResult {
     std::vector<TestResult> tests;
     std::vector<std::string> notes;  // one line per topic that did not build, or was refused
     double score = 0, max_score = 0;
+    nlohmann::ordered_json provenance;  // the test environment (provenance.hpp): the .json's extra_data, if set
 };
 
 // A selection: topics, and optionally one exercise, to grade (empty: everything).

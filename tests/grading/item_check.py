@@ -10,12 +10,14 @@ manifest, the files from the submissions. Then it checks that item_analysis.csv 
 test of every graded topic, in the manifest's order, with the same verdict counts, pass rates of
 the two thirds, discrimination and most common failing check; that item_analysis.md has every test
 and exercise; that the "started" column agrees; that class_report.html uses only files of the out
-folder (no script, nothing from the network) and that each plot it shows exists. The thirds are computed here another way: each
+folder (no script, nothing from the network) and that each plot it shows exists; and that every
+result and run.json carry the same provenance. The thirds are computed here another way: each
 student occupies an interval of the ranking, a tied group shares its intervals, and a third is the
 overlap with [0, n/3).
 
---plant-fault flips the verdict of one test of one result (in memory) before counting: the check
-must then fail, and the script exits 0 only when it did (the test of the test).
+--plant-fault flips the verdict of one test of one result (in memory) before counting; and
+--plant-missing-provenance drops one result's provenance: the check must then fail, and the script
+exits 0 only when it did (the test of the test).
 """
 import argparse
 import csv
@@ -25,6 +27,7 @@ import re
 import sys
 
 VERDICTS = ["pass", "fail", "timeout", "crash", "build error", "missing", "not started"]
+PROVENANCE = ["compiler", "eigen", "gsl", "doctest", "commit", "graders", "grader_sources", "limits", "limits_hash"]
 
 
 def read_manifest(path):
@@ -168,6 +171,12 @@ def check_pages(out, tests, exercises, started, results, problems):
     topics = {t for t, _, _ in tests}
     if images and len(images) != 2 + len(topics):
         problems.append(f"class_report.html has {len(images)} plots, not {2 + len(topics)}")
+    run = json.load(open(os.path.join(out, "run.json"), encoding="utf-8"))
+    for student, r in results:
+        p = r.get("extra_data", {}).get("provenance")
+        if p is None or any(not p.get(k) for k in PROVENANCE) or p != run.get("provenance"):
+            problems.append(f"results/{student}.json: its provenance is missing, incomplete or not run.json's")
+            break
 
 
 def main():
@@ -177,9 +186,12 @@ def main():
     ap.add_argument("--submissions", required=True)
     ap.add_argument("--stubs", required=True)
     ap.add_argument("--plant-fault", action="store_true")
+    ap.add_argument("--plant-missing-provenance", action="store_true")
     a = ap.parse_args()
     tests, exercises = read_manifest(a.manifest)
     results = read_results(a.out)
+    if a.plant_missing_provenance:
+        results[0][1].get("extra_data", {}).pop("provenance", None)
     rows = count(results, tests, a.plant_fault)
     problems = []
     compare(a.out, results, tests, rows, problems)
@@ -187,6 +199,10 @@ def main():
     check_pages(a.out, tests, exercises, started, results, problems)
     for p in problems[:40]:
         print("PROBLEM:", p)
+    if a.plant_missing_provenance:
+        caught = any("provenance" in p for p in problems)
+        print("planted fault (one result without its provenance):", "caught" if caught else "NOT caught")
+        return 0 if caught else 1
     if a.plant_fault:
         print("planted fault (one verdict flipped):", "caught" if problems else "NOT caught")
         return 0 if problems else 1

@@ -37,6 +37,7 @@
 
 #include "grading.hpp"
 #include "item_analysis.hpp"
+#include "provenance.hpp"
 
 using namespace grading;
 
@@ -87,6 +88,7 @@ struct Args {
     int jobs = 0;
     bool force = false, unsafe = false;
     Options options;
+    nlohmann::ordered_json provenance;  // grade: of this run, put into every result it writes (provenance.hpp)
 };
 
 // ---- the command line (CLI11) ----------------------------------------------------------------
@@ -337,6 +339,7 @@ std::vector<Item> collect_items(const Setup& setup, const Args& a, const std::st
     const std::string work = out + "/.work/" + item.name + "." + std::to_string(getpid());
     SubmissionResult r = grade_submission(setup, a.options, item.name, item.files, Selection{}, work, work + ".logs");
     r.seed = a.options.seed;
+    r.provenance = a.provenance;
     const std::string base = out + "/results/" + item.name, logs = out + "/logs/" + item.name;
     remove_tree(logs);
     bool written = std::rename((work + ".logs").c_str(), logs.c_str()) == 0;
@@ -491,7 +494,7 @@ int print_totals(const std::vector<Item>& items, double wall, int jobs) {
 
 // run.json: timings and the date. They change from run to run, so they live apart from the results.
 void write_run_json(const std::string& out, const std::vector<Item>& items, int jobs, double wall, int graded,
-                    const std::string& seed) {
+                    const std::string& seed, const nlohmann::ordered_json& provenance) {
     char date[64];
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -508,6 +511,7 @@ void write_run_json(const std::string& out, const std::vector<Item>& items, int 
                                              {"wall_seconds", json_number(wall)},
                                              {"graded", graded},
                                              {"already_graded", items.size() - static_cast<std::size_t>(graded)},
+                                             {"provenance", provenance},
                                              {"submissions", runs}}));
 }
 
@@ -549,6 +553,7 @@ int grade(const Args& a) {
                 a.options.seed.empty() ? "; the public seed: pass --seed to draw inputs students have not seen" : "");
     std::fflush(stdout);
     Args staged = a;
+    staged.provenance = provenance(setup, a.options);
     if (const auto problem = make_stage(setup, staged.options.stage); !problem.empty()) return fail(problem);
     std::vector<Item> items = collect_items(setup, staged, submissions, out, students);
     on_stop_signals();
@@ -564,7 +569,7 @@ int grade(const Args& a) {
         std::vector<ClassFiles> files;
         for (const auto& item : items) results.push_back(item.result), files.push_back({item.name, item.files});
         write_class_files(setup, a, out, results, files, ignored);
-        write_run_json(out, items, jobs, wall, graded, a.options.seed);
+        write_run_json(out, items, jobs, wall, graded, a.options.seed, staged.provenance);
         std::printf("Results: %s/summary.md, %s/class.csv (canvas.csv, moodle.csv), %s/results/<student>.json\n",
                     out.c_str(), out.c_str(), out.c_str());
     }
@@ -619,8 +624,8 @@ int check(const Args& a) {
     const auto files = collect_files(setup, a.options, folder);
     Options options = a.options;
     if (const auto problem = make_stage(setup, options.stage); !problem.empty()) return fail(problem);
-    const SubmissionResult r =
-        grade_submission(setup, options, "check", files, selection, dir + "/work", dir + "/logs");
+    SubmissionResult r = grade_submission(setup, options, "check", files, selection, dir + "/work", dir + "/logs");
+    r.provenance = provenance(setup, a.options);
     remove_stage(options.stage);
     write_file(dir + "/results.json", results_json(setup, r));
     const bool all = print_check(setup, r, relative_to_root(setup, folder));
