@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "grading.hpp"
+#include "mistakes.hpp"
 
 namespace grading {
 
@@ -570,6 +571,14 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
     std::string summary = std::to_string(passed) + " of " + std::to_string(r.tests.size()) + " tests pass; score " +
                           format_number(r.score) + " of " + format_number(r.max_score) + ".";
     for (const auto& n : r.notes) summary += "\n" + n;
+    // Likely mistakes (mistakes.hpp): said on the exercise's failing tests and in the summary.
+    const auto named = mistakes::name(mistakes::for_root(setup.root), mistakes::outcomes_of(r));
+    const auto likely = [&](const TestResult& t) {
+        for (const auto& n : named)
+            if (n.topic == t.topic && n.exercise == t.exercise && t.verdict != Verdict::pass) return "\n\n" + n.text();
+        return std::string();
+    };
+    for (const auto& n : named) summary += "\n" + n.exercise + ": " + n.text();
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     std::string chapter;
     int in_chapter = 0;
@@ -579,6 +588,7 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
         chapter = t.chapter;
         std::string text = t.verdict == Verdict::pass ? to_string(t.verdict) : to_string(t.verdict) + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
+        text += likely(t);
         tests.push_back({{"name", t.name},
                          {"score", json_number(t.score)},
                          {"max_score", json_number(t.max_score)},
@@ -604,9 +614,9 @@ std::string results_json(const Setup& setup, const SubmissionResult& r) {
                                           {"harness", harness_version},
                                           {"fingerprint", r.fingerprint}}},
                                         {"tests", tests}};
-    if (r.provenance.is_null()) return json_text(out);
-    nlohmann::ordered_json with = out;  // the test environment (provenance.hpp), under extra_data as Gradescope allows
-    with["extra_data"]["provenance"] = r.provenance;
+    nlohmann::ordered_json with = mistakes::with_likely_mistakes(out, named);
+    // The test environment (provenance.hpp), under extra_data as Gradescope allows.
+    if (!r.provenance.is_null()) with["extra_data"]["provenance"] = r.provenance;
     return json_text(with);
 }
 

@@ -5,6 +5,7 @@
 
 #include "grading.hpp"
 #include "hints.hpp"
+#include "mistakes.hpp"
 
 namespace grading {
 
@@ -202,7 +203,7 @@ const Problem& first_problem(const std::vector<Problem>& problems) {
 
 // What the student sees of that exercise: its failing test and message (or that it is not
 // started), then a nudge: Hint 1 for a started exercise, the command for the next rungs otherwise.
-void print_first(const Setup& setup, const Problem& first, const std::string& folder) {
+void print_first(const Setup& setup, const SubmissionResult& r, const Problem& first, const std::string& folder) {
     const TestResult& t = *first.test;
     std::printf("\n%s: %s (%s/%s.cpp)\n",
                 first.status == Verdict::not_started ? "Next exercise" : "First exercise to fix",
@@ -223,6 +224,8 @@ void print_first(const Setup& setup, const Problem& first, const std::string& fo
         std::printf("  the test printed:\n");
         for (const auto& line : split(t.output, '\n')) std::printf("    %s\n", line.c_str());
     }
+    for (const auto& n : mistakes::name(mistakes::for_root(setup.root), mistakes::outcomes_of(r)))
+        if (n.topic == first.topic && n.exercise == first.exercise) std::printf("  %s\n", n.text().c_str());
     std::printf("%s", hint_for(setup, first.exercise).c_str());
 }
 
@@ -245,7 +248,7 @@ bool print_check(const Setup& setup, const SubmissionResult& r, const std::strin
                     tally.total, c ? std::to_string(c->number).c_str() : t.chapter.c_str());
         return false;
     }
-    print_first(setup, first, folder);
+    print_first(setup, r, first, folder);
     if (tally.total > 1)
         std::printf("\n%d of %d exercises pass. Check this one alone: cmake/workbook check %s\n", tally.pass,
                     tally.total, first.exercise.c_str());

@@ -5,6 +5,10 @@
 //                        [--timeout s] [--build-timeout s]
 //   (--mutant grades again only the mutants of these ids, e.g. the survivors of a full run)
 //   workbook_mutants list --setup <build>/grading --solutions <dir> [--topic T]... [--sample N --seed S]
+//   workbook_mutants catalogue --setup ... --solutions <dir> --from <a run's --out> --catalogue <dir> [--topic T]...
+//   workbook_mutants stale --setup ... --solutions <dir> --catalogue <dir> [--topic T]...
+//   workbook_mutants audit --catalogue <dir> --results <grades>/results [--may-name S]... [--plant | --measure]
+//   (the likely mistakes named from the gate: catalogue.hpp; README.md, "Likely mistakes, named")
 //
 // A mutant is the reference solution solutions/<topic>.cpp with one plausible wrong change, made
 // by one of a fixed set of operators (mutate_line below; comments, string and character literals
@@ -35,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "catalogue.hpp"
 #include "support/file.hpp"
 #include "support/process.hpp"
 #include "support/text.hpp"
@@ -59,6 +64,7 @@ struct Mutant {
 
 struct Options {
     std::string command, setup, solutions, out, allow;
+    std::string from, catalogue;  // catalogue and stale: the gate's out folder, the catalogue's folder
     std::vector<std::string> topics, ids;
     int sample = 0, jobs = 2;
     unsigned seed = 1;
@@ -770,6 +776,18 @@ int run(const Options& o) {
     return survivors ? 1 : 0;
 }
 
+// catalogue: the likely mistakes of the gate's run in --from (README.md, "Likely mistakes, named");
+// stale: whether the committed catalogue still has the hash of this tree's graders and solutions.
+int catalogue(const Options& o) {
+    std::vector<mutants::Listed> listed;
+    for (const auto& m : generate(o))
+        listed.push_back({m.id, m.topic, m.function, m.op, m.line, m.before, m.after, m.exercise});
+    const std::string root = (fs::absolute(o.solutions) / "").lexically_normal().parent_path().parent_path().string();
+    const std::string manifest_text = slurp(fs::path(o.setup) / "manifest.txt");
+    if (o.command == "stale") return mutants::check_fresh(root, manifest_text, o.catalogue, listed);
+    return mutants::write_catalogue(root, manifest_text, o.from, o.catalogue, listed);
+}
+
 Options parse(int argc, char** argv) {
     Options o;
     const std::string usage =
@@ -777,12 +795,17 @@ Options parse(int argc, char** argv) {
         "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] [--one-by-one]";
     if (argc < 2) die(usage);
     o.command = argv[1];
-    if (o.command != "run" && o.command != "list") die("unknown command '" + o.command + "' (run or list)");
+    if (o.command != "run" && o.command != "list" && o.command != "catalogue" && o.command != "stale")
+        die("unknown command '" + o.command + "' (run, list, catalogue, stale or audit)");
     CLI::App app{"workbook_mutants"};
     app.set_help_flag();
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-    for (const auto& [name, value] :
-         {std::pair{"--setup", &o.setup}, {"--solutions", &o.solutions}, {"--out", &o.out}, {"--allow", &o.allow}})
+    for (const auto& [name, value] : {std::pair{"--setup", &o.setup},
+                                      {"--solutions", &o.solutions},
+                                      {"--out", &o.out},
+                                      {"--allow", &o.allow},
+                                      {"--from", &o.from},
+                                      {"--catalogue", &o.catalogue}})
         app.add_option(name, *value);
     app.add_option("--topic", o.topics)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_option("--mutant", o.ids)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -808,12 +831,35 @@ Options parse(int argc, char** argv) {
     }
     if (o.setup.empty() || o.solutions.empty()) die("--setup and --solutions are required");
     if (o.command == "run" && o.out.empty()) die("run needs --out <folder>");
+    if (o.command == "catalogue" && (o.from.empty() || o.catalogue.empty()))
+        die("catalogue needs --from <the gate's out folder> and --catalogue <folder>");
+    if (o.command == "stale" && o.catalogue.empty()) die("stale needs --catalogue <folder>");
     return o;
 }
 
 }  // namespace
 
+// audit --catalogue <dir> --results <grades>/results [--may-name <student>]... [--plant]
+static int audit(int argc, char** argv) {
+    std::string catalogue, results;
+    std::vector<std::string> may_name;
+    bool plant = false, measure = false;
+    CLI::App app{"workbook_mutants audit"};
+    app.add_flag("--measure", measure);
+    app.add_option("--catalogue", catalogue)->required();
+    app.add_option("--results", results)->required();
+    app.add_option("--may-name", may_name);
+    app.add_flag("--plant", plant);
+    try {
+        app.parse(argc - 1, argv + 1);
+    } catch (const CLI::ParseError& e) {
+        die(std::string("audit: ") + e.what());
+    }
+    return measure ? mutants::measure(catalogue, results) : mutants::audit(catalogue, results, may_name, plant);
+}
+
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "audit") return audit(argc, argv);
     const Options o = parse(argc, argv);
     if (o.command == "list") {
         for (const auto& m : generate(o))
@@ -821,5 +867,6 @@ int main(int argc, char** argv) {
                         m.before.c_str(), m.after.c_str());
         return 0;
     }
+    if (o.command == "catalogue" || o.command == "stale") return catalogue(o);
     return run(o);
 }
