@@ -115,13 +115,24 @@ std::string Named::text() const {
            list + ".";
 }
 
+namespace {
+// Whether an exercise that o's exercise calls (in the reference) has a test that does not pass.
+bool uses_failing(const Catalogue& catalogue, const std::vector<Outcome>& outcomes, const Outcome& o) {
+    const auto it = catalogue.uses.find(o.topic + "/" + o.exercise);
+    if (it == catalogue.uses.end()) return false;
+    return std::any_of(outcomes.begin(), outcomes.end(), [&](const Outcome& x) {
+        return x.topic == o.topic && it->second.count(x.exercise) && x.verdict != "pass";
+    });
+}
+}  // namespace
+
 std::vector<Named> name(const Catalogue& catalogue, const std::vector<Outcome>& outcomes) {
     std::vector<Named> named;
     std::set<std::pair<std::string, std::string>> seen;
     for (const auto& o : outcomes) {
         if (!seen.insert({o.topic, o.exercise}).second) continue;
         const Signature s = signature_of(outcomes, o.topic, o.exercise);
-        if (s.empty()) continue;
+        if (s.empty() || uses_failing(catalogue, outcomes, o)) continue;
         std::set<std::string> found, ids;
         for (const auto& e : catalogue.entries)
             if (e.topic == o.topic && e.exercise == o.exercise && e.signature == s)
@@ -167,7 +178,8 @@ nlohmann::ordered_json with_likely_mistakes(nlohmann::ordered_json results, cons
 
 // ---- the catalogue's files ----
 
-nlohmann::ordered_json to_json(const std::string& topic, const std::string& hash, const std::vector<Entry>& entries) {
+nlohmann::ordered_json to_json(const std::string& topic, const std::string& hash, const std::vector<Entry>& entries,
+                               const std::map<std::string, std::set<std::string>>& uses) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const auto& e : entries) {
         nlohmann::ordered_json sig = nlohmann::ordered_json::object();
@@ -179,6 +191,7 @@ nlohmann::ordered_json to_json(const std::string& topic, const std::string& hash
             {"about",
              "Written by workbook_mutants catalogue from a run of the mutation gate (tests/grading/README.md, "
              "\"Likely mistakes, named\"); the hash is of the graders and the solution it came from."},
+            {"uses", uses},
             {"entries", list}};
 }
 
@@ -196,6 +209,9 @@ Catalogue load(const std::string& dir) {
         }
         const std::string topic = j.value("topic", "");
         c.hashes[topic] = j.value("hash", "");
+        const auto uses = j.value("uses", nlohmann::json::object());  // (items() of a temporary dangles)
+        for (const auto& [exercise, others] : uses.items())
+            for (const auto& other : others) c.uses[topic + "/" + exercise].insert(other.get<std::string>());
         for (const auto& e : j["entries"]) {
             Entry entry{topic, e.value("exercise", ""), e.value("mutant", ""), e.value("mistake", ""), {}};
             for (const auto& [test, h] : e.at("signature").items()) entry.signature[test] = h.get<std::string>();

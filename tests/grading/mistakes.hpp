@@ -13,6 +13,7 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,18 @@ struct Entry {
 struct Catalogue {
     std::vector<Entry> entries;
     std::map<std::string, std::string> hashes;  // topic -> hash of the graders and solution it came from
-    std::string error;                          // a file that could not be read
+    // "topic/exercise" -> the topic's other exercises its reference calls: while one of those does
+    // not pass, the exercise is not named (its failures may be theirs)
+    std::map<std::string, std::set<std::string>> uses;
+    std::string error;  // a file that could not be read
 };
 
 // Every <topic>.json in `dir` (a missing folder is an empty catalogue).
 Catalogue load(const std::string& dir);
 // The catalogue the grading run uses: <root>/tests/grading/mutants/catalogue, read once.
 const Catalogue& for_root(const std::string& root);
-nlohmann::ordered_json to_json(const std::string& topic, const std::string& hash, const std::vector<Entry>& entries);
+nlohmann::ordered_json to_json(const std::string& topic, const std::string& hash, const std::vector<Entry>& entries,
+                               const std::map<std::string, std::set<std::string>>& uses);
 
 // An exercise's signature; empty when it is not to be matched (it passes, or a test of it did
 // something other than pass or fail, or it is not started).

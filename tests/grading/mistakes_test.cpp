@@ -30,7 +30,7 @@ m::Catalogue one(const std::vector<m::Outcome>& outcomes, const std::string& mis
 
 }  // namespace
 
-TEST_CASE("a failure's signature keeps the grader's line and how the values are wrong, not the numbers") {
+TEST_CASE("mistakes: a failure's signature keeps the grader's line and how the values are wrong, not the numbers") {
     const std::string h = m::how({"rotation", "hat", "t", "fail", false, kVector});
     CHECK(h.find("rotation_test.cpp:44:") != std::string::npos);
     CHECK(h.find("values -.0") != std::string::npos);  // negated, right, zero
@@ -44,7 +44,7 @@ TEST_CASE("a failure's signature keeps the grader's line and how the values are 
           "fail: expected #, actual #, |diff| # | values 0 | one check");
 }
 
-TEST_CASE("a crash, a timeout, a build error or a stub is never matched") {
+TEST_CASE("mistakes: a crash, a timeout, a build error or a stub is never matched") {
     for (const char* verdict : {"crash", "timeout", "build error", "missing"})
         CHECK(m::signature_of(hat(kVector, verdict), "rotation", "hat").empty());
     auto stub = hat(kVector);
@@ -53,7 +53,7 @@ TEST_CASE("a crash, a timeout, a build error or a stub is never matched") {
     CHECK(m::signature_of(hat("", "pass"), "rotation", "hat").empty());  // passing: nothing to name
 }
 
-TEST_CASE("a matching failure is named as a likely pattern, every mistake that gives it") {
+TEST_CASE("mistakes: a matching failure is named as a likely pattern, every mistake that gives it") {
     auto c = one(hat(kVector), "in hat: a minus sign dropped");
     auto named = m::name(c, hat(kVector));
     REQUIRE(named.size() == 1);
@@ -69,9 +69,16 @@ TEST_CASE("a matching failure is named as a likely pattern, every mistake that g
     elsewhere.replace(elsewhere.find(":44:"), 4, ":45:");
     CHECK(m::name(c, hat(elsewhere)).empty());  // another check failed
     CHECK(m::name(c, hat("the test did not finish")).empty());
+    // hat's reference calls vee (say): while vee fails, hat's failures may be vee's, so none is named
+    c.uses["rotation/hat"] = {"vee"};
+    auto with_vee = hat(kVector);
+    with_vee.push_back({"rotation", "vee", "vee: a", "pass", false, ""});
+    CHECK(m::name(c, with_vee).size() == 1);
+    with_vee.back().verdict = "fail";
+    CHECK(m::name(c, with_vee).empty());
 }
 
-TEST_CASE("the class count reads each result's likely mistakes") {
+TEST_CASE("mistakes: the class count reads each result's likely mistakes") {
     const std::string dir = "mistakes-test-results";
     grading::remove_tree(dir);
     grading::make_dirs(dir);

@@ -105,7 +105,8 @@ std::string topic_hash(const std::string& root, const std::string& manifest, con
 }
 
 int write_catalogue(const std::string& root, const std::string& manifest, const std::string& gate_out,
-                    const std::string& catalogue, const std::vector<Listed>& mutants) {
+                    const std::string& catalogue, const std::vector<Listed>& mutants,
+                    const std::map<std::string, std::map<std::string, std::set<std::string>>>& uses) {
     bool ok = false;
     const auto statuses = nlohmann::json::parse(grading::read_file(gate_out + "/mutants.json", &ok), nullptr, false);
     if (!ok || statuses.is_discarded())
@@ -128,8 +129,10 @@ int write_catalogue(const std::string& root, const std::string& manifest, const 
     grading::make_dirs(catalogue);
     for (const auto& [topic, entries] : by_topic) {
         const std::string path = catalogue + "/" + topic + ".json";
-        if (!grading::write_file(path, grading::json_text(grading::mistakes::to_json(
-                                           topic, topic_hash(root, manifest, topic, mutants), entries))))
+        if (!grading::write_file(
+                path, grading::json_text(grading::mistakes::to_json(
+                          topic, topic_hash(root, manifest, topic, mutants), entries,
+                          uses.count(topic) ? uses.at(topic) : std::map<std::string, std::set<std::string>>{}))))
             return std::fprintf(stderr, "cannot write %s\n", path.c_str()), 2;
         std::fprintf(stderr, "workbook_mutants: %s: %zu likely mistakes catalogued\n", path.c_str(), entries.size());
     }
@@ -205,7 +208,7 @@ int measure(const std::string& catalogue, const std::string& results) {
     const auto c = grading::mistakes::load(catalogue);
     std::map<std::string, const grading::mistakes::Entry*> by_id;
     for (const auto& e : c.entries) by_id[e.mutant] = &e;
-    int mutants = 0, failing = 0, named = 0, right = 0, names = 0, others = 0, others_named = 0;
+    int mutants = 0, failing = 0, named = 0, right = 0, names = 0, elsewhere = 0, others = 0, others_named = 0;
     for (const auto& [student, j] : read_results(results, {})) {
         const auto found = grading::mistakes::name(c, grading::mistakes::outcomes_of(j));
         const auto it = by_id.find(student);
@@ -219,6 +222,7 @@ int measure(const std::string& catalogue, const std::string& results) {
         failing += std::any_of(outcomes.begin(), outcomes.end(), [](const auto& o) { return o.verdict != "pass"; });
         named += !found.empty();
         for (const auto& n : found) {
+            elsewhere += n.exercise != it->second->exercise;  // a mistake named where the mutant is not
             if (n.exercise != it->second->exercise) continue;
             const bool own = std::find(n.mutants.begin(), n.mutants.end(), student) != n.mutants.end();
             right += own, names += own ? static_cast<int>(n.mutants.size()) : 0;
@@ -226,8 +230,10 @@ int measure(const std::string& catalogue, const std::string& results) {
     }
     std::printf(
         "measure: %d catalogued mutants graded, %d fail a test, %d given a likely mistake, %d named correctly (their "
-        "own mistake among those named; %.2f named on average when so); %d other submissions, %d given one\n",
-        mutants, failing, named, right, right ? static_cast<double>(names) / right : 0.0, others, others_named);
+        "own mistake among those named; %.2f named on average when so), %d names given to an exercise the mutant "
+        "did not change; %d other submissions, %d given one\n",
+        mutants, failing, named, right, right ? static_cast<double>(names) / right : 0.0, elsewhere, others,
+        others_named);
     return others_named ? 1 : 0;
 }
 

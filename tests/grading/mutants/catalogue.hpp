@@ -2,6 +2,8 @@
 // gate: workbook_mutants catalogue and workbook_mutants stale (mutants.cpp's commands).
 #pragma once
 
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,10 @@ std::string topic_hash(const std::string& root, const std::string& manifest, con
 
 // Writes <catalogue>/<topic>.json for each topic of `mutants` from the gate's run in `gate_out`
 // (mutants.json, checks/<id>/results.json). Returns 0, or 2 with a message on stderr.
+// `uses`: topic -> exercise -> the other exercises its reference calls.
 int write_catalogue(const std::string& root, const std::string& manifest, const std::string& gate_out,
-                    const std::string& catalogue, const std::vector<Listed>& mutants);
+                    const std::string& catalogue, const std::vector<Listed>& mutants,
+                    const std::map<std::string, std::map<std::string, std::set<std::string>>>& uses);
 
 // 0 when every topic's catalogue in `catalogue` has the hash of this tree (1 when one is stale,
 // naming it and the command that makes it again; 2 when one cannot be read).

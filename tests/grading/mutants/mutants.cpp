@@ -778,14 +778,47 @@ int run(const Options& o) {
 
 // catalogue: the likely mistakes of the gate's run in --from (README.md, "Likely mistakes, named");
 // stale: whether the committed catalogue still has the hash of this tree's graders and solutions.
+// For each exercise of the topic, the other exercises its reference body calls, directly or through
+// helpers: a failure of those may be what makes it fail, so it is then not named.
+std::map<std::string, std::set<std::string>> uses_of(const fs::path& file, const std::set<std::string>& exercises) {
+    const std::string s = slurp(file);
+    const auto code = code_mask(s);
+    std::map<std::string, std::set<std::string>> calls;  // function -> functions of the file it calls
+    const auto bodies = function_bodies(s, code);
+    for (const auto& b : bodies)
+        for (const auto& other : bodies) {
+            const std::regex call("\\b" + other.name + "\\(");
+            const std::string text = s.substr(b.begin, b.end - b.begin);
+            if (other.name != b.name && std::regex_search(text, call)) calls[b.name].insert(other.name);
+        }
+    std::map<std::string, std::set<std::string>> uses;
+    for (const auto& e : exercises) {
+        std::set<std::string> seen;
+        std::vector<std::string> todo(calls[e].begin(), calls[e].end());
+        while (!todo.empty()) {
+            const std::string f = todo.back();
+            todo.pop_back();
+            if (!seen.insert(f).second) continue;
+            todo.insert(todo.end(), calls[f].begin(), calls[f].end());
+        }
+        for (const auto& f : seen)
+            if (f != e && exercises.count(f)) uses[e].insert(f);
+    }
+    return uses;
+}
+
 int catalogue(const Options& o) {
+    std::map<std::string, std::map<std::string, std::set<std::string>>> uses;  // topic -> exercise -> uses
+    for (const auto& [topic, exercises] : manifest(o.setup))
+        if (o.topics.empty() || std::find(o.topics.begin(), o.topics.end(), topic) != o.topics.end())
+            uses[topic] = uses_of(fs::path(o.solutions) / (topic + ".cpp"), exercises);
     std::vector<mutants::Listed> listed;
     for (const auto& m : generate(o))
         listed.push_back({m.id, m.topic, m.function, m.op, m.line, m.before, m.after, m.exercise});
     const std::string root = (fs::absolute(o.solutions) / "").lexically_normal().parent_path().parent_path().string();
     const std::string manifest_text = slurp(fs::path(o.setup) / "manifest.txt");
     if (o.command == "stale") return mutants::check_fresh(root, manifest_text, o.catalogue, listed);
-    return mutants::write_catalogue(root, manifest_text, o.from, o.catalogue, listed);
+    return mutants::write_catalogue(root, manifest_text, o.from, o.catalogue, listed, uses);
 }
 
 Options parse(int argc, char** argv) {
