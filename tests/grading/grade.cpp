@@ -458,8 +458,9 @@ TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary
     judge.environment = {};
     if (!g.options.seed.empty()) judge.environment.push_back("WORKBOOK_SEED=" + g.options.seed);
     r.judged =
-        run_limited({topic.judge, "-tc=" + test.name, "-sf=*/" + topic.test_file, "--reporters=workbook",
-                     "--out=/dev/fd/5", "--no-version", "--no-colors"},
+        run_limited({topic.judge, "-tc=" + test.name,
+                     "-sf=" + (test.private_file.empty() ? "*/" + topic.test_file : test.private_file),
+                     "--reporters=workbook", "--out=/dev/fd/5", "--no-version", "--no-colors"},
                     work_dir, work_dir + "/logs/judge.txt", judge, &r.verdicts, 64u << 20, nullptr, {pair[1], shared});
     close(pair[1]);
     close(shared);
@@ -506,6 +507,7 @@ TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& f
     std::string printed = read_file(g.work_dir + "/logs/output.txt");
     if (printed.size() > 500) printed = first_lines(printed, 500);
     tr.output = printed;
+    if (!test.private_file.empty()) withhold_private(tr, g.setup, g.log_dir);  // the detail to the staff log alone
     return tr;
 }
 
@@ -516,9 +518,11 @@ void grade_unbuilt(const Grading& g, const Topic& topic, Verdict verdict, const 
         (verdict == Verdict::build_error ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
     for (const auto& exercise : topic.exercises) {
         if (!g.selected(exercise)) continue;
-        for (std::size_t k = 0; k < exercise.tests.size(); ++k)
+        for (std::size_t k = 0; k < exercise.tests.size(); ++k) {
             result.tests.push_back({topic.chapter, topic.name, exercise.name, exercise.tests[k].name, verdict, 0,
                                     share(exercise.points, exercise.tests.size(), k), false, problem, ""});
+            if (!exercise.tests[k].private_file.empty()) withhold_private(result.tests.back(), g.setup, "");
+        }
     }
 }
 
@@ -550,6 +554,7 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
     remove_tree(work_dir);
     for (const char* sub : {"run", "logs"}) make_dirs(work_dir + "/" + sub);
     if (!log_dir.empty()) make_dirs(log_dir), std::remove((log_dir + "/timing.tsv").c_str());
+    if (!log_dir.empty()) std::remove((log_dir + "/private.txt").c_str());
     const Grading g{setup, options, selection, work_dir, log_dir};
     for (std::size_t k = 0; k < setup.topics.size(); ++k) {
         const Topic& topic = setup.topics[k];
@@ -565,7 +570,9 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
 
 // Gradescope's results.json: a total, and per test its score, maximum, status and output.
 // Everything in it follows from the inputs alone, so a repeated run writes the same bytes.
-std::string results_json(const Setup& setup, const SubmissionResult& r) {
+std::string results_json(const Setup& setup, const SubmissionResult& result) {
+    SubmissionResult r = result;
+    r.tests = student_view(setup, result.tests);  // private tests by name, or a total per exercise
     int passed = 0;
     for (const auto& t : r.tests) passed += t.verdict == Verdict::pass;
     std::string summary = std::to_string(passed) + " of " + std::to_string(r.tests.size()) + " tests pass; score " +

@@ -133,7 +133,8 @@ void stop_children_on_signal();
 struct Test {
     std::string name;
     int line = 0;
-    double seconds = 0;  // the time the grader says it needs (doctest::timeout), if more than --timeout
+    double seconds = 0;          // the time the grader says it needs (doctest::timeout), if more than --timeout
+    std::string private_file{};  // a private test (private.cpp): its file as the judge names it; "" if public
 };
 
 struct Exercise {
@@ -177,7 +178,8 @@ struct Setup {
     std::vector<Topic> topics;
     std::vector<LinkInput> link_inputs;
     std::string manifest_text;
-    std::string fingerprint;  // of everything on the instructor's side
+    std::string fingerprint;    // of everything on the instructor's side
+    bool private_names = true;  // --private-feedback: students see private tests by name, or per exercise a total
 };
 
 // The folder a run builds students' files in (in /tmp, made by make_stage, removed by
@@ -246,6 +248,7 @@ struct TestResult {
     bool not_started = false;  // failed on the stub's todo("<exercise>")
     std::string message;       // why it did not pass (for the student)
     std::string output;        // what the test printed, truncated
+    bool hidden = false;       // a private test: message and output withheld (private.cpp)
 };
 
 struct SubmissionResult {
@@ -274,6 +277,23 @@ std::string results_json(const Setup& setup, const SubmissionResult& result);
 // The completion marker: every verdict and score, and the hash of the results .json written with it.
 std::string results_tsv(const SubmissionResult& result, const std::string& json = "");
 bool read_results_tsv(const std::string& path, SubmissionResult& result);
+
+// ---- private tests (private.cpp; README.md, "Private tests") --------------------------------------
+// An instructor's own graders (WORKBOOK_PRIVATE_TESTS), built into the judges only. Their results
+// show students a name and a verdict (or, with --private-feedback total, a total per exercise);
+// the failed check's message, what the test printed and anything the student's code said about
+// its inputs go to the staff log, logs/<student>/private.txt, alone.
+bool has_private_tests(const Setup& setup);
+// --private-feedback names|total (an empty string or the error). With private tests, the mode and
+// the judges that hold them join the fingerprint (a private test changed: every result regraded).
+std::string set_private_feedback(Setup& setup, const std::string& mode);
+// The student's own check never grades private tests: they are dropped from its setup.
+void drop_private_tests(Setup& setup);
+// After a private test ran: its detail appended to <log_dir>/private.txt (when not ""), then withheld
+// from `t` (and its name too, with --private-feedback total).
+void withhold_private(TestResult& t, const Setup& setup, const std::string& log_dir);
+// What a student's results list: every test, private ones collapsed per exercise when not by name.
+std::vector<TestResult> student_view(const Setup& setup, const std::vector<TestResult>& tests);
 
 // ---- similarity (similarity.cpp) ----------------------------------------------------------------
 // Code that matches the reference solution or another submission, exercise by exercise, after

@@ -129,6 +129,7 @@ namespace {
 // A topic as topics.txt lists it: its chapter and its reference grader.
 struct Listed {
     std::string topic, chapter, reference;
+    std::string private_reference{};  // its private tests on the reference solution (private.cpp), if any
 };
 
 // Points per exercise: "<exercise> <points>" lines; 1 point for an exercise not listed. Returns
@@ -207,6 +208,46 @@ std::string list_exercises(const Listed& t, const std::string& root, const std::
     return {};
 }
 
+// The private tests of a topic (tests/grading/private.cmake), from their reference binary: each
+// joins its exercise after the public tests. Each must name an exercise of the topic, have a name
+// no public test has, and pass on the reference solution. Returns an empty string or the error.
+std::string list_private_tests(const Listed& t, const std::string& work, std::vector<Exercise>& exercises) {
+    if (t.private_reference.empty()) return {};
+    Limits limits;
+    limits.wall_seconds = 600;
+    limits.forbid_processes = false;
+    const Outcome ran = run_limited({t.private_reference, "--no-version", "--no-colors"}, ".", work, limits);
+    const std::string said = read_file(work);
+    if (!ran.started || ran.exit_code != 0)
+        return "a private test of " + t.topic + " fails on the reference solution (" + t.private_reference +
+               "), so it would fail every student:\n" + first_lines(said, 4000);
+    limits.wall_seconds = 60;
+    const Outcome o = run_limited({t.private_reference, "--list-test-cases", "--reporters=workbook", "--no-version"},
+                                  ".", work, limits);
+    const std::string listing = read_file(work);
+    std::remove(work.c_str());
+    if (!o.started || o.exit_code != 0) return "cannot list the private tests of " + t.private_reference;
+    for (const auto& line : split(listing, '\n')) {
+        const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+        if (!j.is_object() || !j.contains("test")) continue;
+        const std::string name = j.value("test", ""), file = j.value("file", "");
+        const auto colon = name.find(':');
+        if (colon == std::string::npos || colon == 0 || name.find_first_of(",*?[]\\") != std::string::npos)
+            return file + ": the private test \"" + name + "\" is not named \"<function>: <property>\"";
+        Exercise* e = nullptr;
+        for (auto& x : exercises) {
+            if (x.name == name.substr(0, colon)) e = &x;
+            for (const auto& other : x.tests)
+                if (other.name == name) return file + ": the private test \"" + name + "\" has a public test's name";
+        }
+        if (!e)
+            return file + ": the private test \"" + name + "\" names no exercise of " + t.topic +
+                   " (a test counts for the function its name starts with)";
+        e->tests.push_back({name, j.value("line", 0), j.value("timeout", 0.0), file});
+    }
+    return {};
+}
+
 // The chapter line of the manifest (a chapter not linked from the contents yet: its label).
 std::string chapter_line(const std::string& label, const std::map<std::string, Chapter>& chapters) {
     Chapter c{label, 0, label, label};
@@ -234,6 +275,8 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
             topics.push_back({f[1], f[2], ""});
         else if (f[0] == "reference" && f.size() > 1 && !topics.empty())
             topics.back().reference = f[1];
+        else if (f[0] == "private" && f.size() > 1 && !topics.empty())
+            topics.back().private_reference = f[1];
     }
     std::map<std::string, double> points;
     std::map<std::string, bool> used;
@@ -248,6 +291,7 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
     for (const auto& t : topics) {
         std::vector<Exercise> exercises;
         if (auto problem = list_exercises(t, root, out_path + ".list", exercises); !problem.empty()) return problem;
+        if (auto problem = list_private_tests(t, out_path + ".list", exercises); !problem.empty()) return problem;
         if (chapters_written.insert(t.chapter).second) out += chapter_line(t.chapter, chapters);
         out += "topic\t" + t.topic + "\t" + t.chapter + "\ttests/" + t.topic + "_test.cpp\n";
         for (const auto& e : exercises) {
@@ -255,8 +299,11 @@ std::string make_manifest(const std::string& topics_path, const std::string& poi
             if (points.count(e.name)) p = points[e.name], used[e.name] = true;
             out += "exercise\t" + t.topic + "\t" + e.name + "\t" + format_number(p) + "\n";
             for (const auto& test : e.tests)
-                out += "test\t" + t.topic + "\t" + e.name + "\t" + std::to_string(test.line) + "\t" + test.name +
-                       (test.seconds > 0 ? "\t" + format_number(test.seconds) : "") + "\n";
+                out += (test.private_file.empty() ? "test\t" : "private\t") + t.topic + "\t" + e.name + "\t" +
+                       std::to_string(test.line) + "\t" + test.name +
+                       (test.private_file.empty() ? (test.seconds > 0 ? "\t" + format_number(test.seconds) : "")
+                                                  : "\t" + format_number(test.seconds) + "\t" + test.private_file) +
+                       "\n";
         }
     }
     for (const auto& [name, was_used] : used)
@@ -365,6 +412,9 @@ std::string read_manifest(const std::string& dir, const std::string& compile_com
         } else if (f[0] == "test" && f.size() > 4 && !setup.topics.empty() && !setup.topics.back().exercises.empty()) {
             setup.topics.back().exercises.back().tests.push_back(
                 {f[4], std::stoi(f[3]), f.size() > 5 ? std::stod(f[5]) : 0.0});
+        } else if (f[0] == "private" && f.size() > 6 && !setup.topics.empty() &&
+                   !setup.topics.back().exercises.empty()) {  // private.cpp: graded in the judge like the rest
+            setup.topics.back().exercises.back().tests.push_back({f[4], std::stoi(f[3]), std::stod(f[5]), f[6]});
         }
     }
     if (setup.topics.empty()) return dir + "/manifest.txt lists no topics";

@@ -69,6 +69,9 @@ const char* usage =
     "  --keep-work            keep each submission's build folder (<out>/.work/)\n"
     "  --seed <n>             draw the graders' random inputs from this seed, not the public one\n"
     "                         (recorded in run.json; students' check uses the public one)\n"
+    "  --private-feedback names|total\n"
+    "                         what students see of private tests (a build with WORKBOOK_PRIVATE_TESTS):\n"
+    "                         each by name and verdict (default), or per exercise only how many pass\n"
     "  --unsafe               grade without a sandbox where there is none (no bubblewrap, not root):\n"
     "                         students' code then runs as you, and can read and write what you can\n"
     "the mutation gate's (tests/grading/mutants/mutants.cpp):\n"
@@ -83,6 +86,7 @@ int fail(const std::string& message) {
 struct Args {
     std::string setup, topics, points, out, folder;
     std::string assignment = "Grioli workbook";  // the column of canvas.csv and moodle.csv
+    std::string private_feedback = "names";      // private tests: by name, or a total per exercise
     std::vector<std::string> positional;
     std::vector<std::string> only;  // as given: a name, or names joined by commas
     int jobs = 0;
@@ -135,6 +139,7 @@ void command_options(CLI::App& app, Args& a) {
                                       {"--folder", &a.folder},
                                       {"--assignment", &a.assignment}})
         app.add_option(name, *value);
+    app.add_option("--private-feedback", a.private_feedback)->check(CLI::IsMember({"names", "total"}));
     limit(app, "-j,--jobs", [&a](double x) { a.jobs = static_cast<int>(x); });
     app.add_option("--only", a.only)->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_flag("--force", a.force);
@@ -186,7 +191,8 @@ std::string absolute(const std::string& path) {
 
 std::string load(const Args& a, Setup& setup) {
     if (a.setup.empty()) return "--setup <build>/grading is required";
-    return load_setup(absolute(a.setup), setup);
+    if (auto problem = load_setup(absolute(a.setup), setup); !problem.empty()) return problem;
+    return set_private_feedback(setup, a.private_feedback);
 }
 
 // The submissions: one folder each. A hidden folder (.git, .DS_Store, an editor's backup) is not
@@ -581,6 +587,7 @@ int grade(const Args& a) {
 int check(const Args& a) {
     Setup setup;
     if (const auto problem = load(a, setup); !problem.empty()) return fail(problem);
+    drop_private_tests(setup);  // a student's check never grades the instructor's private tests
     const std::string folder = a.folder.empty() ? setup.root + "/exercises" : absolute(a.folder);
     if (a.positional.size() > 1) return fail("check takes at most one chapter, topic or exercise");
     Selection selection;
