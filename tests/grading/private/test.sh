@@ -14,7 +14,8 @@
 # file (results/*.json and .tsv, summary.md, class.csv, the LMS files, the similarity report,
 # Gradescope's results.json) must hold no byte of any marker, while the staff log has them; a
 # planted fault (WORKBOOK_GRADING_PLANT=leak-private: the detail left in the results) must be
-# caught by the same scan.
+# caught by the same scan. Last, the build refuses a private test on no exercise, one with a public
+# test's name, and one that fails on the reference solution.
 set -euo pipefail
 root=$1 work=$2 class_tool=$3
 fail() { echo "FAILED: $*" >&2; exit 1; }
@@ -122,4 +123,23 @@ grep -q 'All 11 exercises pass' "$work/check.txt" || { cat "$work/check.txt"; fa
 if leaks "$work/check.txt" "$work/check/results.json" ||
    grep -F -e 'private case' -e 'a private test' -e 'private tests' "$work/check.txt" "$work/check/results.json"; then fail "check graded or named a private test (above)"; fi
 [[ ! -e $work/check/logs/private.txt ]] || fail "check wrote a private log"
-echo "== private tests: graded in Gradescope and in grade (names, total); no marker in any student-visible file; the planted leak caught; check never runs them"
+echo "== a private test the manifest refuses: on no exercise, a public test's name, failing the reference"
+# bad <case> <listing line> <exit status> <words>: the manifest made with a stand-in for the private
+# reference that lists that test and ends with that status must fail, saying the words.
+bad() {
+  local name=$1 listing=$2 status=$3 words=$4 fake=$work/bad-$1.sh
+  printf '#!/bin/sh\ncase "$*" in *--list-test-cases*) echo '\''%s'\'' ; exit 0 ;; esac\nexit %s\n' "$listing" "$status" > "$fake"
+  chmod +x "$fake"
+  sed "s|^private\t.*|private\t$fake|" "$build/grading/topics.txt" > "$work/bad-$name.topics.txt"
+  grep -q "^private	$fake" "$work/bad-$name.topics.txt" || fail "$name: topics.txt has no private line to replace"
+  if "$build/grading/workbook_grade" manifest --topics "$work/bad-$name.topics.txt" --points "$root/tests/grading/points.txt" \
+       --out "$work/bad-$name.manifest.txt" > "$work/bad-$name.txt" 2>&1; then
+    fail "$name: the manifest took it"
+  fi
+  grep -q -F "$words" "$work/bad-$name.txt" || { cat "$work/bad-$name.txt"; fail "$name: the build's error does not say '$words'"; }
+}
+bad no_exercise '{"test":"spin: not an exercise","file":"/p/rotation_test.cpp","line":3}' 0 'names no exercise of rotation'
+bad public_name '{"test":"hat: entries follow the Levi-Civita form hat_ij = -eps_ijk w_k","file":"/p/rotation_test.cpp","line":3}' 0 "has a public test's name"
+bad fails_reference '{"test":"hat: fine","file":"/p/rotation_test.cpp","line":3}' 1 'fails on the reference solution'
+
+echo "== private tests: graded in Gradescope and in grade (names, total); no marker in any student-visible file; the planted leak caught; check never runs them; the manifest refuses the three bad ones"
