@@ -41,10 +41,10 @@ std::string fixed(double x, int digits = 2) {
 
 const char* terminal = "set terminal svg size %d,%d noenhanced font 'sans,12' background '#ffffff'\n";
 
-std::string head(const std::string& dir, const std::string& name, int width, int height) {
+std::string head(const std::string& name, int width, int height) {
     char term[160];
     std::snprintf(term, sizeof term, terminal, width, height);
-    return std::string(term) + "set output " + quoted(dir + "/" + name + ".svg") + "\nset datafile separator '\\t'\n" +
+    return std::string(term) + "set output " + quoted(name + ".svg") + "\nset datafile separator '\\t'\n" +
            "set style fill solid 0.85 border rgb '#333333'\nset grid ytics lc rgb '#dddddd'\n";
 }
 
@@ -54,7 +54,9 @@ std::string draw(const std::string& dir, const std::string& name, const std::str
         return "cannot write " + dir + "/" + name + ".gp";
     support::RunOptions options;
     options.timeout = 120;
-    const support::Result r = support::run({"gnuplot", dir + "/" + name + ".gp"}, options);
+    // In its folder (gnuplot's own cd): the script names its files without a path, so that the
+    // report's files are the same bytes wherever the out folder is.
+    const support::Result r = support::run({"gnuplot", "-e", "cd " + quoted(dir), dir + "/" + name + ".gp"}, options);
     if (r.status == -1) return "gnuplot could not start (" + r.error + ")";
     if (r.status != 0) return "gnuplot failed on " + name + ".gp: " + first_lines(r.err, 300);
     return {};
@@ -69,12 +71,12 @@ std::string plot_totals(const ItemAnalysis& a, const std::string& dir) {
     std::string data = "# bin start\tsubmissions (the last bin includes the maximum)\n";
     for (int k = 0; k < bins; ++k)
         data += format_number(k * width) + "\t" + std::to_string(count[static_cast<std::size_t>(k)]) + "\n";
-    std::string script = head(dir, "totals", 900, 360);
+    std::string script = head("totals", 900, 360);
     script += "set title 'Totals of " + std::to_string(a.submissions) + " submissions (of " +
               format_number(a.max_total) + " points)'\nset xlabel 'total score (points)'\nset ylabel 'submissions'\n" +
               "set boxwidth " + format_number(width * 0.9) +
               " absolute\nset yrange [0:*]\nset xrange [0:" + format_number(bins * width) + "]\nplot " +
-              quoted(dir + "/totals.dat") + " using ($1+" + format_number(width / 2) +
+              quoted("totals.dat") + " using ($1+" + format_number(width / 2) +
               "):2 with boxes lc rgb '#4477aa' notitle\n";
     return draw(dir, "totals", data, script);
 }
@@ -86,13 +88,13 @@ std::string plot_exercises(const ItemAnalysis& a, const std::string& dir) {
         data += std::to_string(k) + "\t" + a.exercises[k].exercise + "\t" + fixed(a.exercises[k].passed / n, 4) + "\t" +
                 fixed(a.exercises[k].started / n, 4) + "\n";
     const int width = std::max(900, 14 * static_cast<int>(a.exercises.size()) + 160);
-    std::string script = head(dir, "exercises", width, 560);
+    std::string script = head("exercises", width, 560);
     script +=
         "set title 'Each exercise: the share of submissions that pass every test, and that started it'\n"
         "set xtics rotate by -60 font ',9'\nset yrange [0:1.1]\nset ylabel 'share of submissions'\n"
         "set boxwidth 0.7\nset key top right\nset bmargin 11\nset lmargin 10\n"
         "plot " +
-        quoted(dir + "/exercises.dat") +
+        quoted("exercises.dat") +
         " using 1:3:xtic(2) with boxes lc rgb '#228833' title 'pass every test', '' using 1:4 with points pt 7 "
         "ps 0.7 lc rgb '#cc3311' title 'started'\n";
     return draw(dir, "exercises", data, script);
@@ -111,13 +113,13 @@ std::string plot_tests(const ItemAnalysis& a, const std::string& topic, const st
                 "\n";
     }
     const std::string name = "tests_" + topic;
-    std::string script = head(dir, name, std::max(900, 16 * k + 260), 380);
+    std::string script = head(name, std::max(900, 16 * k + 260), 380);
     script += "set title 'Tests of " + topic +
               ": the verdicts of the class (numbered as in the table below)'\n"
               "set style data histograms\nset style histogram rowstacked\nset boxwidth 0.8\nset yrange [0:1]\n"
               "set ylabel 'share of submissions'\nset xtics font ',9'\nset key outside right top\n"
               "plot " +
-              quoted(dir + "/" + name + ".dat") +
+              quoted(name + ".dat") +
               " using 3:xtic(2) title 'pass' lc rgb '#228833', '' using 4 title 'fail' lc rgb '#ee6677', '' using 5 "
               "title 'crash or timeout' lc rgb '#aa3377', '' using 6 title 'build error or missing' lc rgb '#bbbbbb', "
               "'' using 7 title 'not started' lc rgb '#66ccee'\n";

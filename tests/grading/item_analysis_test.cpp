@@ -190,6 +190,7 @@ TEST_CASE("item analysis: the class report draws its plots with gnuplot, and wit
         for (const std::string svg : {"totals", "exercises", "tests_t"}) {
             CHECK(page.find("src=\"report/" + svg + ".svg\"") != std::string::npos);
             CHECK(grading::read_file(out + "/report/" + svg + ".svg").find("<svg") != std::string::npos);
+            CHECK(grading::read_file(out + "/report/" + svg + ".gp").find(out) == std::string::npos);  // no path
         }
     }
     std::filesystem::remove_all(setup.root);
