@@ -584,7 +584,8 @@ function(workbook_book)
                           "${tools}/book/names.cpp" "${tools}/book/markdown.cpp")
   # One program, a translation unit per job: render, check the structure, check the figures.
   add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/markdown.cpp"
-                           "${tools}/book/render.cpp" "${tools}/book/structure.cpp" "${tools}/book/figures.cpp")
+                           "${tools}/book/render.cpp" "${tools}/book/live.cpp" "${tools}/book/structure.cpp"
+                           "${tools}/book/figures.cpp")
   get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
   foreach(t snippets book_tool)
     target_link_libraries(${t} PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11 workbook_support)

@@ -471,6 +471,13 @@ namespace {
 
 // Stops a scene that runs past 3 budgets + 10 s: its estimate of its work was wrong, and a
 // scene must never hang. It discards the staged figures, says so on stderr and exits with 1.
+// In the book's live scenes (WebAssembly, no threads: cmake/live/) there is none: the page
+// runs the scene's default-sized work, and the browser stops a page script that hangs.
+#ifdef __EMSCRIPTEN__
+struct Watchdog {
+    Watchdog(Scene&, const std::string&, double) {}
+};
+#else
 class Watchdog {
 public:
     Watchdog(Scene& scene, std::string who, double budget_s)
@@ -499,6 +506,7 @@ private:
     bool done_ = false;
     std::thread thread_;  // last: it starts after the members it uses
 };
+#endif
 
 }  // namespace
 
@@ -527,6 +535,7 @@ void Scene::discard_figures() {
 
 int run(int argc, char** argv, Options& opts, const std::function<void(const Options&, Scene&)>& body) {
     const std::string who = opts.scene();
+    estimated_s = 0;  // this run's own estimates (a live scene's module runs main() again and again)
     try {
         if (!opts.parse(argc, argv)) return 0;
     } catch (const BadInput& e) {

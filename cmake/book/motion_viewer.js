@@ -323,6 +323,22 @@
         console.error("motion viewer: " + e);
       }
     }
+    // A live scene (live.js) hands the viewer the motion its module just computed: the viewer of
+    // that figure is built again on the new samples, in the same place of the lists.
+    window.motionViewerReplace = function (fig, data) {
+      const i = viewers.findIndex((v) => v.figure === fig);
+      if (i < 0) return null;
+      const old = viewers[i], stage = fig.querySelector(".motion-stage");
+      if (stage) stage.remove();
+      if (old.renderer) old.renderer.dispose();
+      const v = new Viewer(fig, data);
+      v.seek(v.t[0]);
+      if (!old.playing) v.pause();
+      v.replaced = (old.replaced || 0) + 1;
+      viewers[i] = v;
+      window.motionViewers[window.motionViewers.indexOf(old)] = v;
+      return v;
+    };
     let last = null;
     function loop(now) {
       const dt = last === null ? 0 : Math.min(0.1, (now - last) / 1000);

@@ -32,6 +32,13 @@ struct RenderOptions {
     bool strict = false;
 };
 
+// A live scene's block on a page (live.cpp): its HTML, and whether its module is in the book.
+struct LiveBlock {
+    std::string html;
+    bool live;
+};
+LiveBlock live_block(const fs::path& live_dir, const fs::path& out, const std::string& scene, const std::string& root);
+
 // --render: the book as HTML pages in options.out.
 int render(const RenderOptions& options);
 

@@ -108,6 +108,7 @@ public:
          bool strict, fs::path contents)
         : root_(std::move(root)),
           runs_(runs),
+          live_(runs.parent_path() / "live"),
           figures_(std::move(figures)),
           this_run_(figures_),
           committed_(root_ / "figures"),
@@ -126,6 +127,7 @@ private:
     void nodes(md::Json& list, PageWork& w);
     void contents(md::Json& c, PageWork& w);
     void raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w);
+    md::Json live_scene(const std::string& scene, PageWork& w, int at);
     bool inline_marker(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w);
     std::string figure_html(const Page& page, const Image& image, int figure);
     std::string value_html(const prose::ValueMarker& v);
@@ -145,10 +147,12 @@ private:
     void render_pages(std::size_t reading_order);
     void check_fragments();
     void copy_viewer();
+    void copy_live();
     int summary(int chapters);
 
     fs::path root_;
     prose::Runs runs_;
+    fs::path live_;  // the build's live scenes (cmake/live/live.cmake): <build>/live, beside runs.txt
     fs::path figures_;
     prose::Reports this_run_, committed_;
     fs::path out_;
@@ -164,6 +168,7 @@ private:
     bool own_run() const { return fs::weakly_canonical(figures_) != fs::weakly_canonical(root_ / "figures"); }
     int values_shown_ = 0, values_committed_ = 0, values_unmeasured_ = 0, figures_copied_ = 0;
     int page_values_ = 0, page_committed_ = 0, page_unmeasured_ = 0, page_motions_ = 0, motions_ = 0;
+    int page_live_ = 0, lives_ = 0;                   // live scenes (live.cpp) on this page, in the book
     std::map<std::string, int> unmeasured_by_scene_;  // runs without a report: values shown as committed
     std::map<std::string, int> committed_by_scene_;   // runs this build did not make: committed reports
 };
@@ -387,7 +392,7 @@ std::string Book::snippet_source(const Page& page, const std::string& name, cons
 // numbered figure. Everything else is the tree pandoc read from the Markdown (markdown.hpp).
 std::string Book::page_document(const Page& page) {
     auto lines = prose::read_lines(page.source);
-    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = page_live_ = 0;
     if (page.kind == "contents") lines = index_lines(lines);
     std::string text;
     for (const auto& l : lines) text += l + "\n";
@@ -439,7 +444,8 @@ void Book::contents(md::Json& c, PageWork& w) {
 // HTML, with the number tags and value markers of its lines done on its text. A line that starts
 // with a value marker or a number tag is a problem: CommonMark (GitHub too) reads it as raw HTML.
 void Book::raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWork& w) {
-    static const std::regex motion(R"(^<!-- motion: (\S+) -->\s*$)");  // the marker's own grammar
+    static const std::regex motion(R"(^<!-- motion: (\S+) -->\s*$)");  // the markers' own grammar
+    static const std::regex live(R"(^<!-- live: (\w+) -->\s*$)");
     const int at = md::line(list[i]);
     const std::string html = md::raw_html(list[i]);
     std::smatch m;
@@ -453,6 +459,8 @@ void Book::raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWo
         if (still) ++i;
         const std::string viewer = motion_block(w.page, still ? &*still : nullptr, m[1], ++w.motion, w.where(at));
         if (!viewer.empty()) out.push_back(raw_html_node("RawBlock", viewer));
+    } else if (std::regex_match(html, m, live)) {
+        out.push_back(live_scene(m[1], w, at));
     } else if (html.find("<!--") == std::string::npos) {
         out.push_back(list[i]);
     } else {
@@ -466,6 +474,15 @@ void Book::raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWo
         for (std::string l; std::getline(in, l); ++k) done += numbers_html(l, w.where(k)) + "\n";
         out.push_back(raw_html_node("RawBlock", done));
     }
+}
+
+// A live scene (live.cpp): its modules and spec from the build's live/ folder; without them (no
+// emscripten) the block says so.
+md::Json Book::live_scene(const std::string& scene, PageWork& w, int at) {
+    const LiveBlock b = live_block(live_, out_, scene, up_to_root(w.page.file));
+    page_live_ += b.live ? 1 : 0, lives_ += b.live ? 1 : 0;
+    if (!b.live) notes_.push_back(w.where(at) + ": the live scene " + scene + " is not built (no emscripten)");
+    return raw_html_node("RawBlock", b.html);
 }
 
 // An HTML comment inside a paragraph: a number tag goes; a value marker, its text and its end
@@ -647,6 +664,7 @@ std::vector<std::string> Book::pandoc_command(const Page& page, const fs::path& 
     if (page_committed_) cmd.push_back("--variable=committed:yes");
     if (page_unmeasured_) cmd.push_back("--variable=unmeasured:yes");
     if (page_motions_) cmd.push_back("--variable=motion:yes");
+    if (page_live_) cmd.push_back("--variable=live:yes");
     if (page.kind == "chapter") cmd.insert(cmd.end(), {"--toc", "--toc-depth=3"});
     cmd.insert(cmd.end(), {"--output=" + out.string(), in.string()});
     return cmd;
@@ -677,7 +695,7 @@ void Book::render_markdown(const Page& page, const Page* prev, const Page* next)
 }
 
 void Book::render_code(const Page& page) {
-    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = 0;
+    page_values_ = page_committed_ = page_unmeasured_ = page_motions_ = page_live_ = 0;
     const std::string text = prose::read_text(page.source);
     std::size_t longest = 2, run_len = 0;
     for (char c : text) {
@@ -758,6 +776,12 @@ void Book::copy_viewer() {
                   fs::copy_options::overwrite_existing);
 }
 
+// The driver of the live scenes (cmake/book/live.js), for the pages that have one.
+void Book::copy_live() {
+    if (lives_)
+        fs::copy_file(root_ / "cmake" / "book" / "live.js", out_ / "live.js", fs::copy_options::overwrite_existing);
+}
+
 // Every page; pages found through links are appended while we go.
 void Book::render_pages(std::size_t reading_order) {
     for (std::size_t i = 0; i < pages_.size(); ++i) {
@@ -833,6 +857,7 @@ int Book::render() {
     render_pages(reading_order);
     check_fragments();
     copy_viewer();
+    copy_live();
     return summary(chapters);
 }
 
