@@ -9,8 +9,8 @@ Chromium (over its DevTools pipe: browser_motion.py's Browser) and, for each liv
     and checks every number the page shows against the native scene run with the same command
     line (`<scene> <the page's arguments> --json --no-figure`): to the relative or absolute
     tolerance its spec states (cmake/live/<scene>.json; timings are not compared);
-  * after each move the plot changed, and, where the spec feeds a viewer, the viewer's motion
-    changed (it was rebuilt on new samples);
+  * after each move the plot changed (unless the control's spec says why it cannot: "same_plot"),
+    and, where the spec feeds a viewer, the viewer's motion changed (rebuilt on new samples);
   * nothing was fetched from the network (every request is file: or data:);
   * it keeps a screenshot per live scene: <book>/screenshots/live-<scene>.png.
 
@@ -117,15 +117,19 @@ def shown(b, i):
       const v = (window.motionViewers || []).find(v => v.data && v.data.scene === s.scene);
       return {numbers: out, argv: s.argv(), runs: s.runs, status: s.result && s.result.status,
               message: s.message.textContent, plot: plot ? plot.innerHTML : '',
-              motion: v ? JSON.stringify(v.data.R.slice(0, 40)) : null}; })()""" % i)
+              motion: v ? JSON.stringify([v.data.t.slice(0, 40), v.data.R.slice(0, 40)]) : null}; })()""" % i)
 
 
 def move(b, i, c, k):
-    """Drags control c's slider to a new place (k-th move) and waits for the scene's next run."""
+    """Drags control c's slider to a new place (k-th move), or picks the menu's next word, and
+    waits for the scene's next run."""
     runs = b.js("window.liveScenes[%d].runs" % i)
     b.js("""(() => { const s = window.liveScenes[%d];
       const r = s.div.querySelector("input[type=range][data-option='%s']");
-      r.value = String((Number(r.value) + %d) %% 1001); r.dispatchEvent(new Event('input')); })()""" % (i, c, 290 + 130 * k))
+      if (r) { r.value = String((Number(r.value) + %d) %% 1001); r.dispatchEvent(new Event('input')); return; }
+      const m = s.div.querySelector("select[data-option='%s']");
+      m.selectedIndex = (m.selectedIndex + 1) %% m.options.length; m.dispatchEvent(new Event('change')); })()"""
+         % (i, c, 290 + 130 * k, c))
     deadline = time.time() + 30
     while time.time() < deadline and b.js("window.liveScenes[%d].runs" % i) == runs:
         time.sleep(0.05)
@@ -160,7 +164,8 @@ def check_scene(b, i, book, build, work, shots, fail, out):
             fail(where + ": moving the control did not run the scene")
             continue
         check_numbers(spec, got, build, work, fail, where)
-        if got["status"] == 0 and got["plot"] == before["plot"]:
+        # A control whose figure does not move says so, and why, in its spec ("same_plot").
+        if spec.get("plot") and not c.get("same_plot") and got["status"] == 0 and got["plot"] == before["plot"]:
             fail(where + ": the plot did not change")
         if spec.get("motion") and got["status"] == 0 and got["motion"] == before["motion"]:
             fail(where + ": the motion viewer still shows the old motion")

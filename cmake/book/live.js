@@ -181,6 +181,14 @@
     form.addEventListener("submit", (e) => e.preventDefault());
     for (const c of this.spec.controls) {
       const o = this.option(c.option);
+      if (o.kind === "word") {
+        form.appendChild(this.choice(c, o));
+        continue;
+      }
+      if (o.kind === "x,y,z") {
+        form.appendChild(this.vector(c, o));
+        continue;
+      }
       const lo = c.min !== undefined ? c.min : o.min, hi = c.max !== undefined ? c.max : o.max;
       const log = c.scale === "log";
       const row = el("label", { class: "live-control" });
@@ -229,6 +237,43 @@
     this.timing = this.div.appendChild(el("p", { class: "live-timing" }));
   };
 
+  // A word option (--sense ccw|cw): a menu of the scene's own choices.
+  LiveScene.prototype.choice = function (c, o) {
+    const row = el("label", { class: "live-control" });
+    row.appendChild(el("span", { class: "live-label" }, c.label + " (--" + c.option + ")"));
+    const menu = el("select", { "data-option": c.option });
+    for (const w of o.choices) menu.appendChild(el("option", { value: w }, w));
+    menu.value = o.default;
+    this.values[c.option] = o.default;
+    menu.addEventListener("change", () => this.request(c.option, menu.value));
+    row.appendChild(menu);
+    return row;
+  };
+
+  // A vector option (--axis x,y,z): a slider per component, each in the spec's range (within the
+  // scene's: spec.cmake checks), the three sent as one "x,y,z".
+  LiveScene.prototype.vector = function (c, o) {
+    const row = el("fieldset", { class: "live-control live-vector" });
+    row.appendChild(el("legend", { class: "live-label" }, c.label + " (--" + c.option + ")"));
+    const v = o.default.split(",").map(Number);
+    const lo = c.min !== undefined ? c.min : o.min, hi = c.max !== undefined ? c.max : o.max;
+    this.values[c.option] = v.join(",");
+    ["x", "y", "z"].forEach((name, k) => {
+      const slider = el("input", { type: "range", min: 0, max: 1000, step: 1, "data-option": c.option, "aria-label": name });
+      slider.value = ((v[k] - lo) / (hi - lo)) * 1000;
+      const shown = el("span", { class: "live-value" }, String(v[k]));
+      slider.addEventListener("input", () => {
+        v[k] = Number((lo + ((hi - lo) * Number(slider.value)) / 1000).toPrecision(3));
+        shown.textContent = String(v[k]);
+        this.request(c.option, v.join(","));
+      });
+      row.appendChild(el("span", {}, name));
+      row.appendChild(slider);
+      row.appendChild(shown);
+    });
+    return row;
+  };
+
   LiveScene.prototype.load = function () {
     const t0 = performance.now();
     const script = el("script", { src: this.div.dataset.module });
@@ -257,7 +302,7 @@
   // A moved control: one run a frame at most, with the latest values.
   LiveScene.prototype.request = function (option, value) {
     this.values[option] = value;
-    if (this.pending || this.state !== "ready") return;
+    if (this.pending || this.state !== "ready") return;  // a failed module runs no more
     this.pending = true;
     requestAnimationFrame(() => {
       this.pending = false;
@@ -275,7 +320,17 @@
 
   LiveScene.prototype.run = function () {
     const t0 = performance.now();
-    const text = this.module.ccall("live_run", "string", ["string"], [this.argv().join("\n")]);
+    let text;
+    try {
+      text = this.module.ccall("live_run", "string", ["string"], [this.argv().join("\n")]);
+    } catch (e) {
+      // The module stopped (a GSL function reached in a page that has no GSL, memory): it says so.
+      this.state = "failed";
+      this.div.classList.add("live-failed");
+      this.status.textContent = "The live scene stopped (" + e + "); the figure and the numbers of the text are the scene's own run.";
+      console.error("live scene " + this.scene + ": " + e);
+      return null;
+    }
     const t1 = performance.now();
     const r = JSON.parse(text);
     this.result = r;
@@ -317,7 +372,7 @@
 
   LiveScene.prototype.set = function (option, value) {
     this.values[option] = value;
-    for (const i of this.div.querySelectorAll("input[data-option='" + option + "']")) if (i.type === "number") i.value = value;
+    for (const i of this.div.querySelectorAll("[data-option='" + option + "']")) if (i.type === "number" || i.tagName === "SELECT") i.value = value;
     return this.run();
   };
 

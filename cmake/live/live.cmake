@@ -2,11 +2,9 @@
 # Debian's emscripten into one single-file module, which the book's page runs when the reader
 # moves a control. Declared in a chapter's CMakeLists.txt, after the scene:
 #
-#   workbook_live_scene(<scene> [WITHOUT_GSL])
+#   workbook_live_scene(<scene>)
 #
-# WITHOUT_GSL: the scene's sources call GSL (Debian has no WebAssembly GSL), and its live spec's
-# fixed options keep it on the workbook's own integrators (exercises/provided/rigid/: taylor,
-# stepping); a GSL function reached all the same aborts the run.
+# The scene must not need GSL (Debian builds none for WebAssembly).
 #
 # The module is built from the scene's source and the sources of every library it links (its
 # topics from WORKBOOK_IMPL, the provided code), never from a second copy. Its page spec,
@@ -54,11 +52,6 @@ function(_workbook_live_sources target out)
 endfunction()
 
 function(workbook_live_scene name)
-  cmake_parse_arguments(L "WITHOUT_GSL" "" "" ${ARGN})
-  set(missing "")
-  if(L_WITHOUT_GSL)
-    set(missing gsl)
-  endif()
   set(spec "${WORKBOOK_ROOT}/cmake/live/${name}.json")
   if(NOT EXISTS "${spec}")
     message(FATAL_ERROR "workbook_live_scene(${name}): its page spec ${spec} is missing")
@@ -66,7 +59,7 @@ function(workbook_live_scene name)
   _workbook_live_sources(${name} sources)
   string(REPLACE ";" "," sources "${sources}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_LIVE_LIST
-               "${name}|${CMAKE_CURRENT_SOURCE_DIR}/${name}.cpp|${sources}|${missing}")
+               "${name}|${CMAKE_CURRENT_SOURCE_DIR}/${name}.cpp|${sources}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_LIVE_SCENES ${name})
 endfunction()
 
