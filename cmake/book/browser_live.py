@@ -279,7 +279,8 @@ def selftest(exe, book, build, work):
     perturb = """const p = %s; let o = r.report, k = 0; if (o) { for (; k < p.length - 1; k++) {
         const q = p[k]; if (q[0] === '[') { const i = Number(q.slice(1, -1)); if (o.rows) { const row = o.rows[i];
           const col = o.columns.indexOf(p[k + 1]); row[col] *= 1 + 1e-9; o = null; break; } o = o[i]; } else o = o[q]; }
-        if (o) o[p[k]] *= 1 + 1e-9; }""" % path
+        const last = p[k][0] === '[' ? Number(p[k].slice(1, -1)) : p[k];
+        if (o) o[last] *= 1 + 1e-9; }""" % path
     damage = {
         "sound": (lambda d: None, None),
         "wrong-number": (lambda d: open(os.path.join(d, "live", scene + ".js"), "a").write(WRONG % (scene, scene, perturb)),
