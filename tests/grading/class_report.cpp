@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "item_analysis.hpp"
+#include "mistakes.hpp"
 #include "support/process.hpp"
 
 namespace grading {
@@ -165,7 +166,30 @@ std::string figure(const std::string& name, const std::string& alt, bool drawn) 
     return drawn ? "<p><img src=\"report/" + name + ".svg\" alt=\"" + html(alt) + "\"></p>\n" : "";
 }
 
-std::string page(const ItemAnalysis& a, const std::vector<std::string>& topics, const std::string& problem) {
+// The likely mistakes the class's results name (mistakes.hpp), commonest first: as Markdown for
+// item_analysis.md, or as HTML for the page. Empty when no result names one.
+std::string mistakes_section(const std::vector<mistakes::ClassCount>& counts, bool as_html) {
+    if (counts.empty()) return "";
+    const std::string intro =
+        "Failing exercises whose pattern of failures is what a catalogued wrong version (the mutation gate's) "
+        "gives; likely, not certain: read the code.";
+    std::string out = as_html ? "<h2>Likely mistakes across the class</h2>\n<p>" + html(intro) +
+                                    "</p>\n<table><tr><th>Students</th><th>Exercise</th><th>Likely mistake</th></tr>\n"
+                              : "\n## Likely mistakes across the class\n\n" + intro +
+                                    "\n\n| Students | Exercise | Likely mistake |\n|---:|---|---|\n";
+    for (const auto& c : counts) {
+        if (as_html)
+            out += "<tr><td class=n>" + std::to_string(c.students) + "</td><td><code>" + html(c.exercise) +
+                   "</code> (" + html(c.topic) + ")</td><td>" + html(c.mistake) + "</td></tr>\n";
+        else
+            out += "| " + std::to_string(c.students) + " | `" + c.exercise + "` (" + c.topic + ") | " +
+                   replace_all(c.mistake, "|", "\\|") + " |\n";
+    }
+    return out + (as_html ? "</table>\n" : "");
+}
+
+std::string page(const ItemAnalysis& a, const std::vector<std::string>& topics, const std::string& problem,
+                 const std::string& likely) {
     const bool drawn = problem.empty();
     std::string out = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Class report</title>\n";
     out += std::string(style) + "</head><body>\n<h1>Class report</h1>\n<p>" + std::to_string(a.submissions) +
@@ -184,7 +208,7 @@ std::string page(const ItemAnalysis& a, const std::vector<std::string>& topics, 
     for (const auto& topic : topics)
         out += "<h2>Tests of " + html(topic) + "</h2>\n" +
                figure("tests_" + topic, "verdicts of each test of " + topic, drawn) + topic_table(a, topic);
-    return out + "</body></html>\n";
+    return out + likely + "</body></html>\n";
 }
 
 }  // namespace
@@ -193,7 +217,8 @@ std::string write_item_analysis(const Setup& setup, const std::vector<Submission
                                 const std::vector<ClassFiles>& files, const std::string& out) {
     const ItemAnalysis a = analyse_items(setup, results, files);
     write_file(out + "/item_analysis.csv", item_analysis_csv(a));
-    write_file(out + "/item_analysis.md", item_analysis_markdown(a));
+    const auto likely = mistakes::count_in_class(out + "/results");
+    write_file(out + "/item_analysis.md", item_analysis_markdown(a) + mistakes_section(likely, false));
     const std::string dir = out + "/report";
     remove_tree(dir);
     make_dirs(dir);
@@ -203,7 +228,7 @@ std::string write_item_analysis(const Setup& setup, const std::vector<Submission
     if (problem.empty()) problem = plot_exercises(a, dir);
     for (const auto& t : topics)
         if (problem.empty()) problem = plot_tests(a, t, dir);
-    write_file(out + "/class_report.html", page(a, topics, problem));
+    write_file(out + "/class_report.html", page(a, topics, problem, mistakes_section(likely, true)));
     return "Item analysis: " + out + "/item_analysis.md, .csv and " + out + "/class_report.html" +
            (problem.empty() ? "" : " (no plots: " + problem + ")");
 }

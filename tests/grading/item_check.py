@@ -16,7 +16,8 @@ student occupies an interval of the ranking, a tied group shares its intervals, 
 overlap with [0, n/3).
 
 --plant-fault flips the verdict of one test of one result (in memory) before counting; and
---plant-missing-provenance drops one result's provenance: the check must then fail, and the script
+--plant-missing-provenance drops one result's provenance, and --plant-mistake names a likely mistake in
+one result that item_analysis.md does not count: the check must then fail, and the script
 exits 0 only when it did (the test of the test).
 """
 import argparse
@@ -150,6 +151,25 @@ def started_here(results, exercises, submissions, stubs):
     return started
 
 
+def check_likely_mistakes(md, results, problems):
+    """item_analysis.md counts each likely mistake the results name (extra_data.likely_mistakes),
+    once per student, and has no such section when none is named."""
+    named = {}
+    for _, r in results:
+        seen = set()
+        for e in r.get("extra_data", {}).get("likely_mistakes", []):
+            for m in e.get("mistakes", []):
+                seen.add((e["topic"], e["exercise"], m if isinstance(m, str) else m.get("mistake", str(m))))
+        for key in seen:
+            named[key] = named.get(key, 0) + 1
+    if not named and "Likely mistakes across the class" in md:
+        problems.append("item_analysis.md lists likely mistakes that no result names")
+    for (topic, exercise, mistake), n in named.items():
+        row = f"| {n} | `{exercise}` ({topic}) | " + mistake.replace("|", "\\|") + " |"
+        if row not in md:
+            problems.append(f"item_analysis.md does not count {n} student(s) for the likely mistake {mistake[:60]!r}")
+
+
 def check_pages(out, tests, exercises, started, results, problems):
     md = open(os.path.join(out, "item_analysis.md"), encoding="utf-8").read()
     for _, exercise, name in tests:
@@ -171,6 +191,7 @@ def check_pages(out, tests, exercises, started, results, problems):
     topics = {t for t, _, _ in tests}
     if images and len(images) != 2 + len(topics):
         problems.append(f"class_report.html has {len(images)} plots, not {2 + len(topics)}")
+    check_likely_mistakes(md, results, problems)
     run = json.load(open(os.path.join(out, "run.json"), encoding="utf-8"))
     for student, r in results:
         p = r.get("extra_data", {}).get("provenance")
@@ -187,11 +208,15 @@ def main():
     ap.add_argument("--stubs", required=True)
     ap.add_argument("--plant-fault", action="store_true")
     ap.add_argument("--plant-missing-provenance", action="store_true")
+    ap.add_argument("--plant-mistake", action="store_true")
     a = ap.parse_args()
     tests, exercises = read_manifest(a.manifest)
     results = read_results(a.out)
     if a.plant_missing_provenance:
         results[0][1].get("extra_data", {}).pop("provenance", None)
+    if a.plant_mistake:  # a likely mistake the item analysis never saw
+        results[0][1].setdefault("extra_data", {}).setdefault("likely_mistakes", []).append(
+            {"topic": "rotation", "exercise": "hat", "mistakes": ["a mistake planted by item_check.py"]})
     rows = count(results, tests, a.plant_fault)
     problems = []
     compare(a.out, results, tests, rows, problems)
@@ -202,6 +227,10 @@ def main():
     if a.plant_missing_provenance:
         caught = any("provenance" in p for p in problems)
         print("planted fault (one result without its provenance):", "caught" if caught else "NOT caught")
+        return 0 if caught else 1
+    if a.plant_mistake:
+        caught = any("likely mistake" in p for p in problems)
+        print("planted fault (a likely mistake not counted):", "caught" if caught else "NOT caught")
         return 0 if caught else 1
     if a.plant_fault:
         print("planted fault (one verdict flipped):", "caught" if problems else "NOT caught")
