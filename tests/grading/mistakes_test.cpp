@@ -60,7 +60,7 @@ TEST_CASE("mistakes: a matching failure is named as a likely pattern, every mist
     CHECK(named[0].text().find("This pattern of failures is what this mistake gives") == 0);
     CHECK(named[0].text().find("likely, not certain") != std::string::npos);
     c.entries.push_back(c.entries[0]);
-    c.entries.back().mistake = "in hat: the constant `1` written for `0`";
+    c.entries.back().mistake = "in hat: a constant off (one too many, or twice what it should be)";
     named = m::name(c, hat(kVector));
     REQUIRE(named.size() == 1);
     CHECK(named[0].mistakes.size() == 2);

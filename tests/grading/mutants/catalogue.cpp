@@ -2,7 +2,6 @@
 #include "catalogue.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -12,81 +11,23 @@
 
 namespace mutants {
 
-namespace {
-
-bool ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
-
-// The part of `before` that the mutant changed, [from, to), widened to whole words; and the
-// same part of `after`.
-struct Change {
-    std::string old_text, new_text;
-    std::size_t from = 0, to = 0;  // in before
-};
-
-Change change_of(const std::string& before, const std::string& after, const std::string& op) {
-    std::size_t p = 0, q = 0;
-    while (p < before.size() && p < after.size() && before[p] == after[p]) ++p;
-    while (q < before.size() - p && q < after.size() - p &&
-           before[before.size() - 1 - q] == after[after.size() - 1 - q])
-        ++q;
-    std::size_t from = p, to = before.size() - q, tail = q;  // tail: the common suffix's length
-    const auto widen = [&](auto&& keep) {
-        while (from > 0 && keep(before[from - 1])) --from;
-        while (tail > 0 && keep(before[before.size() - tail])) --tail;
-    };
-    if (op == "compare")
-        widen([](char c) { return c == '<' || c == '>' || c == '=' || c == '!'; });
-    else if (op == "index" && from > 0 && before[from - 1] == '.')
-        --from, tail = tail >= 2 ? tail - 2 : 0, widen([](char c) { return ident(c); });  // w.x()
-    else if (op == "index") {                                                             // M(i, j): the whole call
-        while (from > 0 && before[from - 1] != '(') --from;
-        if (from > 0) --from;
-        widen([](char c) { return ident(c) && c != '.'; });
-        while (tail > 0 && before[before.size() - tail] != ')') --tail;
-        if (tail > 0) --tail;
-    } else if (op != "sign")
-        widen([](char c) { return ident(c); });
-    to = before.size() - tail;
-    return {before.substr(from, to - from), after.substr(from, after.size() - tail - from), from, to};
-}
-
-// The line around [from, to), at most about 70 characters, as code.
-std::string context(const std::string& line, std::size_t from, std::size_t to) {
-    std::string s = grading::trim(line);
-    const std::size_t shift = line.find(s.empty() ? " " : s.substr(0, 1));
-    from = from >= shift ? from - shift : 0, to = to >= shift ? to - shift : 0;
-    if (!s.empty() && (s.back() == ';' || s.back() == '{')) s.pop_back();
-    s = grading::trim(s);
-    if (s.size() <= 70) return "`" + s + "`";
-    const std::size_t a = from > 30 ? from - 30 : 0, b = std::min(s.size(), std::max(to, from) + 30);
-    return "`" + std::string(a > 0 ? "..." : "") + s.substr(a, b - a) + (b < s.size() ? "..." : "") + "`";
-}
-
-std::string code(const std::string& s) { return "`" + grading::trim(s) + "`"; }
-
-}  // namespace
-
+// The mistake in the student's terms, from the gate's operator: what went wrong, never the
+// reference's code or its right token (feedback names the slip; the fix stays the student's, as
+// with the hints).
 std::string describe(const Listed& m) {
-    const Change c = change_of(m.before, m.after, m.op);
-    const std::string where = context(m.before, c.from, c.to), in = "in " + m.function + ": ";
-    if (m.op == "transpose") return in + "`.transpose()` dropped from " + where;
-    if (m.op == "sincos") return in + code(c.new_text) + " where " + code(c.old_text) + " belongs, in " + where;
-    if (m.op == "sign" && m.after.size() < m.before.size()) return in + "a minus sign dropped in " + where;
-    if (m.op == "sign")
-        return in + "the sign flipped (" + code(c.new_text) + " for " + code(c.old_text) + ") in " + where;
-    if (m.op == "compare")
-        return in + "the comparison " + code(c.new_text) + " where " + code(c.old_text) + " belongs, in " + where;
-    if (m.op == "index")
-        return in + "the indices or components swapped (" + code(c.new_text) + " read for " + code(c.old_text) +
-               ") in " + where;
-    if (m.op == "constant")
-        return in + "the constant " + code(c.new_text) + " written for " + code(c.old_text) + " in " + where;
+    const std::string in = "in " + m.function + ": ";
+    if (m.op == "transpose") return in + "a `.transpose()` left out";
+    if (m.op == "sincos") return in + "a sine and a cosine swapped";
+    if (m.op == "sign" && m.after.size() < m.before.size()) return in + "a minus sign left out";
+    if (m.op == "sign") return in + "an arithmetic sign flipped (a `+` for a `-`, or the other way)";
+    if (m.op == "compare") return in + "a comparison turned around, or off by its boundary (`<` for `<=`, ...)";
+    if (m.op == "index") return in + "two indices of a matrix, or two components of a vector, swapped";
+    if (m.op == "constant") return in + "a constant off (one too many, or twice what it should be)";
     if (m.op == "return")
         return in +
-               (m.after.find("return !(") != std::string::npos ? "the answer negated" : "the result's sign flipped") +
-               " in " + where;
-    if (m.op == "condition") return in + "the condition turned around in " + where;
-    return in + code(m.after) + " written for " + where;
+               (m.after.find("return !(") != std::string::npos ? "the answer negated" : "the result's sign flipped");
+    if (m.op == "condition") return in + "a condition turned around";
+    return in + "a one-token slip";
 }
 
 std::string topic_hash(const std::string& root, const std::string& manifest, const std::string& topic,
