@@ -641,8 +641,10 @@ function(workbook_book)
                        PROPERTIES FIXTURES_REQUIRED scene_reports)
   set_tests_properties("book: renders to HTML with MathML, its figures and no broken link"
                        PROPERTIES FIXTURES_SETUP book_html)
+  # 73 pages, their screenshots and the motion viewers: 249 s beside the grading suite at a load of
+  # 7, past 300 s at a higher one. The limit only stops a browser that hangs.
   set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-                       PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77)
+                       PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77 TIMEOUT 900)
   set_tests_properties("book: the browser checks fail on a book broken on purpose"
                        "book: the motion checks fail on a viewer broken on purpose" PROPERTIES SKIP_RETURN_CODE 77)
   # Two browsers at once on two cores time out: one browser test at a time.
