@@ -21,15 +21,7 @@ work=$2
 chapters=${3:-}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
-browser=""
-for candidate in chromium chromium-browser google-chrome; do
-  if command -v "$candidate" >/dev/null 2>&1; then browser=$(command -v "$candidate"); break; fi
-done
-if [[ -z $browser ]]; then
-  echo "No Chromium here: install it (sudo apt-get install chromium) or run cmake/workbook test, which does."
-  [[ ${CI:-} == true ]] && exit 1
-  exit 77
-fi
+source "$here/chromium.sh"
 [[ -f $book/pages.txt ]] || { echo "No book in $book (pages.txt is missing): render it first."; exit 1; }
 
 rm -rf "$work"

@@ -15,15 +15,7 @@ set -euo pipefail
 grades=$(cd "$1" && pwd)
 work=$2
 
-browser=""
-for candidate in chromium chromium-browser google-chrome; do
-  if command -v "$candidate" >/dev/null 2>&1; then browser=$(command -v "$candidate"); break; fi
-done
-if [[ -z $browser ]]; then
-  echo "No Chromium here: install it (sudo apt-get install chromium) or run cmake/workbook test, which does."
-  [[ ${CI:-} == true ]] && exit 1
-  exit 77
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/../../cmake/book/chromium.sh"
 [[ -f $grades/class_report.html ]] || { echo "No $grades/class_report.html: run the class run first."; exit 1; }
 
 rm -rf "$work"
