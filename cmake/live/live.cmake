@@ -18,6 +18,8 @@
 set(WORKBOOK_EMSCRIPTEN_TOOLCHAIN "/usr/share/emscripten/cmake/Modules/Platform/Emscripten.cmake"
     CACHE FILEPATH "emscripten's CMake toolchain file (Debian: emscripten)")
 find_program(WORKBOOK_EMXX em++)
+set(WORKBOOK_LIVE_GSL "" CACHE PATH
+    "prefix of a GSL built with emscripten (include/gsl, lib/libgsl.a, lib/libgslcblas.a) for live scenes that need GSL")
 
 # Every library a target links, itself included, that holds workbook sources (rigid_*).
 function(_workbook_live_sources target out)
@@ -86,6 +88,7 @@ function(workbook_live)
     BINARY_DIR "${CMAKE_BINARY_DIR}/live-build"
     CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${WORKBOOK_EMSCRIPTEN_TOOLCHAIN} -DCMAKE_BUILD_TYPE=Release
                -DWORKBOOK_ROOT=${WORKBOOK_ROOT} -DLIVE_LIST=${out}/scenes.txt -DLIVE_OUT=${out}
+               -DWORKBOOK_LIVE_GSL=${WORKBOOK_LIVE_GSL}
     # emscripten's JavaScript optimizer needs acorn: Debian's node finds it, another node is told
     # where Debian keeps it.
     BUILD_COMMAND ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs ${CMAKE_COMMAND} --build <BINARY_DIR>
