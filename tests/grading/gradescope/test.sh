@@ -46,6 +46,11 @@ grade() {
 }
 
 grade correct "$work/autograder" 11 exercises/rotation.cpp "$(cat "$root/solutions/rotation.cpp")"
+# The zip holds no .git: its results still name the commit it was packed from.
+if commit=$(git -C "$root" rev-parse HEAD 2>/dev/null); then
+  grep -q "\"commit\": \"$commit\"" "$work/correct.json" || fail "correct: results.json does not name the packed commit $commit"
+  grep -q '"commit_from": "packed_from.txt' "$work/correct.json" || fail "correct: results.json does not say where its commit came from"
+fi
 grade stub "$work/autograder" 0 rotation.cpp "$(cat "$root/exercises/rotation.cpp")"
 grep -q 'not started' "$work/stub.json" || fail "stub: no test says 'not started'"
 grade broken "$work/autograder" 0 exercises/rotation.cpp "$(sed 's/todo("hat");/todo("hat")/' "$root/exercises/rotation.cpp")"
