@@ -14,7 +14,9 @@
 // kit::gp::<figure> (or kit::gp::<scene>) in the generated header <scene>.gp.hpp
 // (workbook_scene, cmake/Workbook.cmake), so a scene needs no path at run time. A placeholder
 // is @name@ (letters, digits, _), a syntax gnuplot's own text never has; a placeholder left
-// unfilled, or a value for one the script does not have, throws std::logic_error.
+// unfilled, or a value for one the script does not have, throws std::logic_error. The filling is
+// the support library's (cmake/tools/support/script.hpp), which the grading run's class report
+// uses too: kit::Script, kit::Fill and kit::filled are its names here.
 //
 // What it guarantees, because gnuplot itself does not (see research/grading-anchors.md, 4):
 //   * gnuplot runs as `gnuplot -d SCRIPT` (no user init files; started from its argument
@@ -37,23 +39,15 @@
 #include <vector>
 
 #include "scene.hpp"
+#include "support/script.hpp"
 
 namespace kit {
 
-// A gnuplot script embedded from its .gp file: the file's name (for messages) and its text.
-struct Script {
-    std::string_view name;
-    std::string_view text;
-};
-
-// The values of a script's placeholders: {{"title", "..."}, {"xmax", "3.5"}}.
-using Fill = std::vector<std::pair<std::string, std::string>>;
-
-// `script`'s text with every @name@ replaced by its value (once: a value is not scanned again).
-// Throws std::logic_error naming the script for a placeholder without a value, or a value
-// without a placeholder. An '@' that does not open a placeholder (a gnuplot macro) stays, and so
-// does a comment line (its first non-blank a '#'), which may name placeholders.
-std::string filled(const Script& script, const Fill& values = {});
+// A gnuplot script embedded from its .gp file, the values of its placeholders, and its text
+// filled in (support/script.hpp).
+using Script = support::Script;
+using Fill = support::Fill;
+using support::filled;
 
 // How a figure is drawn: gnuplot's `set terminal` line, and whether the workbook's one style
 // (figures/style.gp) is loaded after it.
@@ -94,6 +88,6 @@ private:
 };
 
 // gnuplot's way of writing a string literal: single quotes, inner quotes doubled.
-std::string quoted(const std::string& text);
+inline std::string quoted(const std::string& text) { return support::gnuplot_quoted(text); }
 
 }  // namespace kit

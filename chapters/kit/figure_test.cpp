@@ -1,5 +1,6 @@
-// The kit's gnuplot scripts (figure.hpp): placeholders filled, and each way of filling them
-// wrong planted, so that a script never reaches gnuplot half filled.
+// The kit's gnuplot scripts and figures (figure.hpp): its own scripts filled by their names (the
+// filling itself, and each way of getting it wrong, is tested with the support library:
+// cmake/tools/support/support_test.cpp), and a figure drawn, staged and published.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include "figure.hpp"
 
@@ -12,39 +13,6 @@
 #include <vector>
 
 #include "kit.gp.hpp"
-
-TEST_CASE("a placeholder is replaced by its value, gnuplot's own braces and brackets stay") {
-    const kit::Script s{"t.gp", "set title '@title@'\nset xrange [0:*]\nset ylabel '{/:Bold a}'\nplot @plot@\n"};
-    CHECK(kit::filled(s, {{"plot", "'-' with lines"}, {"title", "n = 3"}}) ==
-          "set title 'n = 3'\nset xrange [0:*]\nset ylabel '{/:Bold a}'\nplot '-' with lines\n");
-}
-
-TEST_CASE("a value is inserted as it is, never scanned for placeholders again") {
-    const kit::Script s{"t.gp", "@a@ @b@"};
-    CHECK(kit::filled(s, {{"a", "@b@"}, {"b", "x"}}) == "@b@ x");
-}
-
-TEST_CASE("an '@' that opens no placeholder (a gnuplot macro, an address) stays") {
-    const kit::Script s{"t.gp", "@macro plot\nmail a@b.c\n@1@ @@\n"};
-    CHECK(kit::filled(s) == "@macro plot\nmail a@b.c\n@1@ @@\n");
-}
-
-TEST_CASE("a comment line may name a placeholder: it stays as it is, and needs no value") {
-    const kit::Script s{"t.gp", "# @curves@: one per method\n  # @x@\nplot @curves@\n#"};
-    CHECK(kit::filled(s, {{"curves", "'-'"}}) == "# @curves@: one per method\n  # @x@\nplot '-'\n#");
-}
-
-TEST_CASE("a placeholder left without a value throws, naming the script and the placeholder") {
-    const kit::Script s{"planted.gp", "set title '@title@'\nset xlabel '@xlabel@'\n"};
-    CHECK_THROWS_WITH_AS(kit::filled(s, {{"title", "x"}}), doctest::Contains("planted.gp"), std::logic_error);
-    CHECK_THROWS_WITH_AS(kit::filled(s, {{"title", "x"}}), doctest::Contains("@xlabel@"), std::logic_error);
-}
-
-TEST_CASE("a value for a placeholder the script does not have throws (a misspelt name)") {
-    const kit::Script s{"planted.gp", "set title '@title@'\n"};
-    CHECK_THROWS_WITH_AS(kit::filled(s, {{"title", "x"}, {"titel", "y"}}), doctest::Contains("@titel@"),
-                         std::logic_error);
-}
 
 TEST_CASE("the kit's embedded scripts: the style has none, the GIF's are filled by their names") {
     CHECK(kit::gp::style.name == "style.gp");

@@ -1,6 +1,6 @@
 // The scene kit's figures, for a live scene in the book (compiled with emscripten instead of
 // chapters/kit/figure.cpp): there is no gnuplot in a page, so a Figure records what the scene's
-// own drawing code sends it (its filled gnuplot scripts and commands, chapters/kit/script.cpp,
+// own drawing code sends it (its filled gnuplot scripts and commands, cmake/tools/support/script.cpp,
 // and its inline data blocks) and the page draws the same data (cmake/book/live.js). A Figure
 // always records, also under --no-figure: the live module runs the scene with --no-figure so that
 // --motion writes no GIF.

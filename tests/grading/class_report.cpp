@@ -1,14 +1,18 @@
 // class_report.html and its plots: the item analysis as a page (item_analysis.hpp). The plots are
 // SVG files in <out>/report/, each drawn by gnuplot from a script and a data file written beside
-// it (support::run, an argument vector: no shell). Without gnuplot the page says so and keeps the
-// tables. The page needs nothing from outside the out folder: no script, font or stylesheet.
+// it (support::run, an argument vector: no shell). The scripts are report/*.gp beside this file,
+// embedded at build time (grading::gp::..., class_report.gp.hpp) and filled by support::filled:
+// report/head.gp, then the plot's own. Without gnuplot the page says so and keeps the tables. The
+// page needs nothing from outside the out folder: no script, font or stylesheet.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "class_report.gp.hpp"
 #include "item_analysis.hpp"
 #include "mistakes.hpp"
 #include "support/process.hpp"
+#include "support/script.hpp"
 
 namespace grading {
 
@@ -32,7 +36,7 @@ std::string html(const std::string& s) {
 }
 
 // A path as a gnuplot single-quoted string ('' is a quote inside one).
-std::string quoted(const std::string& s) { return "'" + replace_all(s, "'", "''") + "'"; }
+std::string quoted(const std::string& s) { return support::gnuplot_quoted(s); }
 
 std::string fixed(double x, int digits = 2) {
     char text[32];
@@ -40,13 +44,13 @@ std::string fixed(double x, int digits = 2) {
     return std::string(text) == "-0.00" ? "0.00" : text;
 }
 
-const char* terminal = "set terminal svg size %d,%d noenhanced font 'sans,12' background '#ffffff'\n";
-
-std::string head(const std::string& name, int width, int height) {
-    char term[160];
-    std::snprintf(term, sizeof term, terminal, width, height);
-    return std::string(term) + "set output " + quoted(name + ".svg") + "\nset datafile separator '\\t'\n" +
-           "set style fill solid 0.85 border rgb '#333333'\nset grid ytics lc rgb '#dddddd'\n";
+// The script of the plot `name`: report/head.gp (terminal, output, style), then its own, filled.
+std::string plot_script(const std::string& name, int width, int height, const support::Script& body,
+                        const support::Fill& values) {
+    return support::filled(
+               gp::head,
+               {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"svg", quoted(name + ".svg")}}) +
+           support::filled(body, values);
 }
 
 // A plot: its data and script in dir, drawn by gnuplot. Returns "" or what went wrong.
@@ -72,14 +76,13 @@ std::string plot_totals(const ItemAnalysis& a, const std::string& dir) {
     std::string data = "# bin start\tsubmissions (the last bin includes the maximum)\n";
     for (int k = 0; k < bins; ++k)
         data += format_number(k * width) + "\t" + std::to_string(count[static_cast<std::size_t>(k)]) + "\n";
-    std::string script = head("totals", 900, 360);
-    script += "set title 'Totals of " + std::to_string(a.submissions) + " submissions (of " +
-              format_number(a.max_total) + " points)'\nset xlabel 'total score (points)'\nset ylabel 'submissions'\n" +
-              "set boxwidth " + format_number(width * 0.9) +
-              " absolute\nset yrange [0:*]\nset xrange [0:" + format_number(bins * width) + "]\nplot " +
-              quoted("totals.dat") + " using ($1+" + format_number(width / 2) +
-              "):2 with boxes lc rgb '#4477aa' notitle\n";
-    return draw(dir, "totals", data, script);
+    return draw(dir, "totals", data,
+                plot_script("totals", 900, 360, gp::totals,
+                            {{"submissions", std::to_string(a.submissions)},
+                             {"max_total", format_number(a.max_total)},
+                             {"box_width", format_number(width * 0.9)},
+                             {"xmax", format_number(bins * width)},
+                             {"half_width", format_number(width / 2)}}));
 }
 
 std::string plot_exercises(const ItemAnalysis& a, const std::string& dir) {
@@ -89,16 +92,7 @@ std::string plot_exercises(const ItemAnalysis& a, const std::string& dir) {
         data += std::to_string(k) + "\t" + a.exercises[k].exercise + "\t" + fixed(a.exercises[k].passed / n, 4) + "\t" +
                 fixed(a.exercises[k].started / n, 4) + "\n";
     const int width = std::max(900, 14 * static_cast<int>(a.exercises.size()) + 160);
-    std::string script = head("exercises", width, 560);
-    script +=
-        "set title 'Each exercise: the share of submissions that pass every test, and that started it'\n"
-        "set xtics rotate by -60 font ',9'\nset yrange [0:1.1]\nset ylabel 'share of submissions'\n"
-        "set boxwidth 0.7\nset key top right\nset bmargin 11\nset lmargin 10\n"
-        "plot " +
-        quoted("exercises.dat") +
-        " using 1:3:xtic(2) with boxes lc rgb '#228833' title 'pass every test', '' using 1:4 with points pt 7 "
-        "ps 0.7 lc rgb '#cc3311' title 'started'\n";
-    return draw(dir, "exercises", data, script);
+    return draw(dir, "exercises", data, plot_script("exercises", width, 560, gp::exercises, {}));
 }
 
 std::string plot_tests(const ItemAnalysis& a, const std::string& topic, const std::string& dir) {
@@ -114,17 +108,9 @@ std::string plot_tests(const ItemAnalysis& a, const std::string& topic, const st
                 "\n";
     }
     const std::string name = "tests_" + topic;
-    std::string script = head(name, std::max(900, 16 * k + 260), 380);
-    script += "set title 'Tests of " + topic +
-              ": the verdicts of the class (numbered as in the table below)'\n"
-              "set style data histograms\nset style histogram rowstacked\nset boxwidth 0.8\nset yrange [0:1]\n"
-              "set ylabel 'share of submissions'\nset xtics font ',9'\nset key outside right top\n"
-              "plot " +
-              quoted(name + ".dat") +
-              " using 3:xtic(2) title 'pass' lc rgb '#228833', '' using 4 title 'fail' lc rgb '#ee6677', '' using 5 "
-              "title 'crash or timeout' lc rgb '#aa3377', '' using 6 title 'build error or missing' lc rgb '#bbbbbb', "
-              "'' using 7 title 'not started' lc rgb '#66ccee'\n";
-    return draw(dir, name, data, script);
+    return draw(dir, name, data,
+                plot_script(name, std::max(900, 16 * k + 260), 380, gp::tests,
+                            {{"topic", topic}, {"data", quoted(name + ".dat")}}));
 }
 
 const char* style =

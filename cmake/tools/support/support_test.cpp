@@ -1,13 +1,17 @@
-// The support library's own tests: files, text, and programs started without a shell.
+// The support library's own tests: files, text, programs started without a shell, and gnuplot
+// scripts filled (each way of filling one wrong planted, so that a script never reaches gnuplot
+// half filled).
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "support/file.hpp"
 #include "support/process.hpp"
+#include "support/script.hpp"
 #include "support/text.hpp"
 
 namespace {
@@ -100,4 +104,42 @@ TEST_CASE("a spawned program writes its output to a file and is waited for") {
     CHECK(support::wait(pid, 10) == 0);
     CHECK(support::read_file(out) == "done\noops\n");
     std::remove(out.c_str());
+}
+
+TEST_CASE("gnuplot scripts: a placeholder is replaced by its value, gnuplot's own braces and brackets stay") {
+    const support::Script s{"t.gp", "set title '@title@'\nset xrange [0:*]\nset ylabel '{/:Bold a}'\nplot @plot@\n"};
+    CHECK(support::filled(s, {{"plot", "'-' with lines"}, {"title", "n = 3"}}) ==
+          "set title 'n = 3'\nset xrange [0:*]\nset ylabel '{/:Bold a}'\nplot '-' with lines\n");
+}
+
+TEST_CASE("gnuplot scripts: a value is inserted as it is, never scanned for placeholders again") {
+    const support::Script s{"t.gp", "@a@ @b@"};
+    CHECK(support::filled(s, {{"a", "@b@"}, {"b", "x"}}) == "@b@ x");
+}
+
+TEST_CASE("gnuplot scripts: an '@' that opens no placeholder (a gnuplot macro, an address) stays") {
+    const support::Script s{"t.gp", "@macro plot\nmail a@b.c\n@1@ @@\n"};
+    CHECK(support::filled(s) == "@macro plot\nmail a@b.c\n@1@ @@\n");
+}
+
+TEST_CASE("gnuplot scripts: a comment line may name a placeholder: it stays as it is, and needs no value") {
+    const support::Script s{"t.gp", "# @curves@: one per method\n  # @x@\nplot @curves@\n#"};
+    CHECK(support::filled(s, {{"curves", "'-'"}}) == "# @curves@: one per method\n  # @x@\nplot '-'\n#");
+}
+
+TEST_CASE("gnuplot scripts: a placeholder left without a value throws, naming the script and the placeholder") {
+    const support::Script s{"planted.gp", "set title '@title@'\nset xlabel '@xlabel@'\n"};
+    CHECK_THROWS_WITH_AS(support::filled(s, {{"title", "x"}}), doctest::Contains("planted.gp"), std::logic_error);
+    CHECK_THROWS_WITH_AS(support::filled(s, {{"title", "x"}}), doctest::Contains("@xlabel@"), std::logic_error);
+}
+
+TEST_CASE("gnuplot scripts: a value for a placeholder the script does not have throws (a misspelt name)") {
+    const support::Script s{"planted.gp", "set title '@title@'\n"};
+    CHECK_THROWS_WITH_AS(support::filled(s, {{"title", "x"}, {"titel", "y"}}), doctest::Contains("@titel@"),
+                         std::logic_error);
+}
+
+TEST_CASE("gnuplot scripts: a string literal doubles its quotes") {
+    CHECK(support::gnuplot_quoted("it's") == "'it''s'");
+    CHECK(support::gnuplot_quoted("") == "''");
 }

@@ -1,16 +1,13 @@
-// A figure's gnuplot script filled in (see figure.hpp): shared by the native figures
-// (figure.cpp, which run gnuplot) and the live book's (cmake/live/figure_live.cpp, which record
-// what a scene draws for the page).
-#include <fmt/format.h>
+// gnuplot scripts filled in (script.hpp): shared by the scenes' figures (chapters/kit/figure.cpp,
+// and the live book's recorder, cmake/live/figure_live.cpp) and the class report
+// (tests/grading/class_report.cpp).
+#include "support/script.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <stdexcept>
-#include <string>
-#include <string_view>
 
-#include "figure.hpp"
-
-namespace kit {
+namespace support {
 
 namespace {
 
@@ -29,6 +26,10 @@ bool comment_at(std::string_view text, std::size_t at) {
     if (at > 0 && text[at - 1] != '\n') return false;
     while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
     return at < text.size() && text[at] == '#';
+}
+
+std::string message(const Script& script, const std::string& what) {
+    return "gnuplot script " + std::string(script.name) + ": " + what;
 }
 
 }  // namespace
@@ -54,23 +55,22 @@ std::string filled(const Script& script, const Fill& values) {
         std::size_t k = 0;
         while (k < values.size() && values[k].first != name) ++k;
         if (k == values.size())
-            throw std::logic_error(
-                fmt::format("gnuplot script {}: no value for its placeholder @{}@", script.name, std::string(name)));
+            throw std::logic_error(message(script, "no value for its placeholder @" + std::string(name) + "@"));
         out += values[k].second;
         used[k] = true;
         i += n + 2;
     }
     for (std::size_t k = 0; k < values.size(); ++k)
         if (!used[k])
-            throw std::logic_error(fmt::format("gnuplot script {}: a value for @{}@, a placeholder it does not have",
-                                               script.name, values[k].first));
+            throw std::logic_error(
+                message(script, "a value for @" + values[k].first + "@, a placeholder it does not have"));
     return out;
 }
 
-std::string quoted(const std::string& text) {
+std::string gnuplot_quoted(const std::string& text) {
     std::string out = "'";
-    for (char c : text) out += (c == '\'') ? std::string("''") : std::string(1, c);
+    for (const char c : text) out += (c == '\'') ? std::string("''") : std::string(1, c);
     return out + "'";
 }
 
-}  // namespace kit
+}  // namespace support
