@@ -107,12 +107,15 @@ endfunction()
 #   exercises/rigid/           the student's API: one header per topic, what they implement
 #   exercises/provided/rigid/  the code given to them: vocabulary types, input checks, todo(),
 #                              the GSL wrapper, the stepping driver, the Taylor and exact references
-# and, for the graders and the scenes only, tests/reference/ ("reference/<name>.hpp"): the
+# and, for the graders and the scenes only, tests/include/reference/ ("reference/<name>.hpp"): the
 # independent computations both check the exercises against, the graders' yardstick, beside them
-# and outside what a student's compile sees (the grading run gives it exercises/ only).
+# and outside what a student's compile sees (the grading run gives it exercises/ only). Its
+# include root, tests/include/, holds the reference and nothing else, so that a scene reaches no
+# other file of tests/ (the graders' checks.hpp, the grading run): the test "code: a scene can
+# include the reference and nothing else of tests/" (workbook_reference_include_check) holds it.
 set(WORKBOOK_API_INCLUDES "${WORKBOOK_ROOT}/exercises" "${WORKBOOK_ROOT}/exercises/provided")
 add_library(workbook_reference INTERFACE)
-target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/tests")
+target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/tests/include")
 
 # ------------------------------------------------------------------------------------------
 # One API topic: exercises/rigid/<name>.hpp, with solutions/<name>.cpp, exercises/<name>.cpp and
@@ -881,6 +884,31 @@ function(workbook_function_size)
                    -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
   set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300
                        SKIP_REGULAR_EXPRESSION "SKIPPED: (clang-tidy|universal-ctags) was not found")
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# What a scene can include from tests/: the reference (tests/include/reference/) and nothing else,
+# checked with every scene's own include path (cmake/reference_include_check.cmake); the
+# self-test puts tests/ back on the path (a planted include root) and must see it flagged.
+function(workbook_reference_include_check)
+  get_property(scenes GLOBAL PROPERTY WORKBOOK_SCENE_LIST)
+  set(text "")
+  foreach(entry IN LISTS scenes)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 1 name)
+    string(APPEND text "${name}|$<JOIN:$<TARGET_PROPERTY:${name},INCLUDE_DIRECTORIES>,|>\n")
+  endforeach()
+  set(list "${CMAKE_BINARY_DIR}/test/scene_includes.txt")
+  file(GENERATE OUTPUT "${list}" CONTENT "${text}")
+  set(script "${WORKBOOK_ROOT}/cmake/reference_include_check.cmake")
+  set(check "code: a scene can include the reference and nothing else of tests/")
+  set(selftest "code: the include check flags tests/checks.hpp when tests/ is on a scene's include path")
+  set(args -DCXX=${CMAKE_CXX_COMPILER} -DROOT=${WORKBOOK_ROOT} -DSCENES=${list})
+  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check
+                                   -P "${script}")
+  add_test(NAME "${selftest}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check-selftest
+                                      -DPLANT=${WORKBOOK_ROOT}/tests -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300)
 endfunction()
 
 # ------------------------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 // Graders for Chapter 6, the Grioli lines (rigid/inertia.hpp). Each test name starts with the
 // exercise it grades; each cross-checks against an independent computation: a direct sum over
 // point masses, Eigen's SelfAdjointEigenSolver, a bisection on the eigen-solver's moments, a
-// binary128 evaluation (tests/reference/), or the circular sections computed from their
+// binary128 evaluation (tests/include/reference/), or the circular sections computed from their
 // definition.
 #include "reference/inertia.hpp"
 

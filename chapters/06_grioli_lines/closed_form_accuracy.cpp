@@ -1,6 +1,6 @@
 // Chapter 6 scene: how many digits the printed closed forms of [P, (5.3), (5.8), (5.12)] keep,
 // against the rewritten forms of rigid/inertia.hpp and Eigen's eigen-solver, all measured
-// against binary128 (tests/reference/quad_inertia.hpp):
+// against binary128 (tests/include/reference/quad_inertia.hpp):
 //   1. on a Grioli line, L from 1e-6 to 1e6 body sizes;
 //   2. on nearly symmetric bodies, B_g - A_g from 1e-1 to 1e-15 of C_g - A_g.
 #include <algorithm>

@@ -40,7 +40,7 @@ inline BodyAtG body(const BodyAtG& b) {
     return b;
 }
 
-// The yardstick the graders use too (tests/reference/inertia.hpp): the tensor from (5.2)
+// The yardstick the graders use too (tests/include/reference/inertia.hpp): the tensor from (5.2)
 // written out, Eigen's eigen-solver with the moments named as in (5.3), the body's size.
 using inertia_reference::Crossing;
 using inertia_reference::crossing_by_bisection;

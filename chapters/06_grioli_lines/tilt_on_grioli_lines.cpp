@@ -3,7 +3,7 @@
 // Grioli line, below it and above it, for L from 1e-6 to 1e6 body sizes.
 //
 // On the line the two sides agree at every L; off it they never do. Checked against a binary128
-// evaluation on the exact line (tests/reference/quad_inertia.hpp), and against Eigen's eigenvectors.
+// evaluation on the exact line (tests/include/reference/quad_inertia.hpp), and against Eigen's eigenvectors.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

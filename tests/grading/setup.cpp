@@ -98,7 +98,7 @@ std::string hash_instructor_files(const std::string& root) {
     // The likely-mistakes catalogue too: a result names the mistakes of the catalogue it was made with.
     for (const char* folder :
          {"tests", "tests/grading", "tests/grading/remote", "exercises/rigid", "exercises/provided/rigid", "solutions",
-          "tests/reference", "tests/grading/mutants/catalogue"}) {
+          "tests/include/reference", "tests/grading/mutants/catalogue"}) {
         const std::string dir = root + "/" + folder;
         for (const auto& name : list_dir(dir)) {
             const std::string path = dir + "/" + name;
