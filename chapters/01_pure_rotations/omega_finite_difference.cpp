@@ -159,10 +159,10 @@ void report(kit::Scene& scene, const Params& p, const Sweep& sw) {
 void draw_error_vs_step(kit::Scene& scene, const Params& p, const Sweep& sw) {
     const double eps = std::numeric_limits<double>::epsilon();
     kit::Figure fig(scene, "omega_fd_error_vs_step.svg");
-    std::string curves;
+    std::vector<kit::Fill> curves;
     for (std::size_t s = 0; s < stencils.size(); ++s)
-        curves += "'-' using 1:2 with linespoints ls " + std::to_string(s + 1) + " title '" + stencils[s].name + "', ";
-    fig.script(kit::gp::error_vs_step, {{"stencils", curves}});
+        curves.push_back({{"ls", std::to_string(s + 1)}, {"title", stencils[s].name}});
+    fig.script(kit::gp::error_vs_step, {{"stencils", kit::joined(kit::gp::stencil, curves)}});
     for (std::size_t s = 0; s < stencils.size(); ++s) {
         std::vector<std::vector<double>> col;
         for (const auto& r : sw.rows) col.push_back({r[0], std::max(r[s + 1], 1e-17)});

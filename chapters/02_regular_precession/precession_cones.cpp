@@ -156,7 +156,6 @@ void draw(kit::Scene& scene, const std::vector<RegularPrecession>& cases, const 
     if (!fig.enabled()) return;
     fig.script(kit::gp::precession_cones);
     for (std::size_t c = 0; c < cases.size(); ++c) draw_case(fig, cases[c], results[c]);
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -121,7 +121,6 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
     fd.data(series(0, 6)).data(series(1, 6)).data(series(2, 6));
     fd.script(kit::gp::orthogonality);
     fd.data(series(0, 8)).data(series(1, 8)).data(series(2, 8));
-    fd << "unset multiplot\n";
     fd.finish();
 }
 

@@ -1,5 +1,5 @@
 # free_body_drift.svg (free_body_work_precision.cpp), two panels: the energy's drift, then
-# (free_body_work_precision.orthogonality.gp) R's distance from a rotation; the scene ends the
+# (free_body_work_precision.orthogonality.gp) R's distance from a rotation; the kit ends the
 # multiplot.
 set multiplot layout 1, 2 title 'What the integrators do to the invariants (max over the run)'
 set logscale xy

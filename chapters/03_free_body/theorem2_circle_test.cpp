@@ -207,7 +207,6 @@ void draw(kit::Scene& scene, const Results& r) {
     fig.script(kit::gp::separatrix);
     fig.data(series(rows, -1, false, 4)).data(series(rows, 1, false, 4)).data(series(rows, -1, false, 5));
     fig.data(series(rows, 1, false, 5));
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -1,5 +1,5 @@
 # theorem2_residuals.svg (theorem2_circle_test.cpp), two panels: towards a principal axis,
-# then (theorem2_circle_test.separatrix.gp) towards the separatrix; the scene ends the multiplot.
+# then (theorem2_circle_test.separatrix.gp) towards the separatrix; the kit ends the multiplot.
 set multiplot layout 1, 2 title 'Free motions: distance of the polhode from a plane and from a circle (relative to its size)'
 set logscale xy
 set format x '10^{%L}'

@@ -148,11 +148,10 @@ void draw(kit::Scene& scene, const Vec3& moments, const Grid& grid) {
                                      std::to_string(moments(2)).substr(0, 4);
     const char* titles[] = {"β/α = 1/2 (Case 1)", "β = α (Case 3)", "β/α = √2 (Case 1)", "β = 2α (Case 2)",
                             "β = 3α (|γ_-| = 2α)"};
-    std::string curves;
+    std::vector<kit::Fill> curves;
     for (std::size_t r = 0; r < ratios.size(); ++r)
-        curves += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                  " title '" + titles[r] + "'";
-    fig.script(kit::gp::lemma1_cases, {{"moments", moments_text}, {"curves", curves}});
+        curves.push_back({{"ls", std::to_string(r + 1)}, {"title", titles[r]}});
+    fig.script(kit::gp::lemma1_cases, {{"moments", moments_text}, {"curves", kit::joined(kit::gp::curve, curves)}});
     for (std::size_t r = 0; r < ratios.size(); ++r) {
         std::vector<std::vector<double>> d;
         for (std::size_t g = 0; g < gammas_deg.size(); ++g)

@@ -1,5 +1,5 @@
 # lemma1_min_residual.svg (lemma1_cases.cpp): the smallest residual of E = f T found, against
-# the angle γ, one curve per ratio β/α (the scene writes them).
+# the angle γ, one curve per ratio β/α (@curves@: lemma1_cases.curve.gp, one each).
 set title 'Smallest residual of E = f T found, asymmetric body (A, B, C) = (@moments@)'
 set logscale y
 set format y '10^{%L}'

@@ -98,14 +98,10 @@ void report(kit::Scene& scene, const Grid& grid) {
 void draw(kit::Scene& scene, const Grid& grid) {
     kit::Figure fig(scene, "routh_min_residual.svg", 820, 500);
     const char* rt[] = {"1/2", "1", "2"};
-    std::string curves;
-    for (std::size_t r = 0; r < ratios.size(); ++r)
-        curves += std::string(r ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                  " title 'asymmetric, β/α = " + rt[r] + "'";
-    for (std::size_t r = 0; r < ratios.size(); ++r)
-        curves += ", '-' using 1:2 with linespoints ls " + std::to_string(r + 1) +
-                  " dt 2 pt 6 title 'symmetric (A = B), β/α = " + rt[r] + "'";
-    fig.script(kit::gp::routh_search, {{"curves", curves}});
+    std::vector<kit::Fill> curves;
+    for (std::size_t r = 0; r < ratios.size(); ++r) curves.push_back({{"ls", std::to_string(r + 1)}, {"ratio", rt[r]}});
+    fig.script(kit::gp::routh_search, {{"asymmetric", kit::joined(kit::gp::asymmetric, curves)},
+                                       {"symmetric", kit::joined(kit::gp::symmetric, curves)}});
     for (std::size_t c = 1; c <= 2 * ratios.size(); ++c) {
         std::vector<std::vector<double>> d;
         for (const auto& row : grid.rows) d.push_back({row[0], std::max(row[c], 1e-17)});

@@ -1,5 +1,6 @@
 # routh_min_residual.svg (routh_search.cpp): precession about the vertical, the smallest
-# residual of E = f T found against the angle γ, for asymmetric and symmetric bodies.
+# residual of E = f T found against the angle γ, for asymmetric and symmetric bodies, one curve
+# per ratio β/α each (routh_search.asymmetric.gp, routh_search.symmetric.gp).
 set title 'Precession about the vertical (b = k): smallest residual of E = f T found'
 set logscale y
 set format y '10^{%L}'
@@ -9,4 +10,4 @@ set xtics 30
 set xlabel 'angle γ between the rotation vector a and the vertical (degrees)'
 set ylabel 'min RMS |E - fT| / f'
 set key center right
-plot @curves@
+plot @asymmetric@, @symmetric@

@@ -144,7 +144,7 @@ struct Arrow {
 };
 
 void arrows(kit::Figure& fig, const std::vector<Arrow>& list) {
-    fig << "unset arrow\nunset label\n";
+    fig.script(kit::gp::clear);
     int id = 1;
     for (const Arrow& a : list) {
         const std::string n = std::to_string(id++);
@@ -193,7 +193,7 @@ void draw(kit::Scene& scene, const Result& r) {
            {1.0 * A2.col(1), "R_B", purple, Vec3(-0.3, 0, 0.02)},
            {1.0 * A2.col(2), "R_C", sky, Vec3(0.05, 0, -0.1)}},
           fr.fig2.z);
-    fig << "unset key\n";
+    fig.script(kit::gp::next_panel);
     panel(fig, r, "[P] Figure 3: t = 0",
           {{1.45 * k, "k", black, Vec3(0.05, 0, 0.05)},
            {L * b, "b", blue, Vec3(0.06, 0, 0.04), "lw 1.5 dt 2"},
@@ -202,7 +202,6 @@ void draw(kit::Scene& scene, const Result& r) {
            {1.0 * A3.col(1), "R_B", purple, Vec3(-0.2, 0, 0.0)},
            {1.0 * A3.col(2), "R_C", sky, Vec3(-0.12, 0, 0.08)}},
           fr.fig3.z);
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -1,6 +1,6 @@
 # grioli_frames.svg (grioli_frames.cpp): [P]'s Figures 2 and 3 side by side, each panel
-# (grioli_frames.panel.gp) with its arrows (grioli_frames.arrow.gp); the scene unsets the key
-# after the first panel and ends the multiplot.
+# (grioli_frames.panel.gp) with its arrows (grioli_frames.arrow.gp); the key is the first
+# panel's (grioli_frames.next_panel.gp); the kit ends the multiplot.
 set view 72, 28, 1.7, 1.0
 set view equal xyz
 unset border

@@ -102,12 +102,12 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
                           "|μ|^{{{}}} = {:.1e}",
                           p.periods, v.amplification)
                     : "";
-    std::string curves;
+    std::vector<kit::Fill> curves;
     for (std::size_t i = 0; i < methods.size(); ++i)
-        curves += std::string(i ? ", " : "") + "'-' using 1:2 with linespoints ls " + std::to_string(i + 1) +
-                  " title '" + methods[i] + (i >= 4 ? " (implicit)" : "") + "'";
-    fig.script(kit::gp::grioli_integrators,
-               {{"periods", std::to_string(p.periods)}, {"unstable", unstable}, {"curves", curves}});
+        curves.push_back({{"ls", std::to_string(i + 1)}, {"title", methods[i] + (i >= 4 ? " (implicit)" : "")}});
+    fig.script(kit::gp::grioli_integrators, {{"periods", std::to_string(p.periods)},
+                                             {"unstable", unstable},
+                                             {"curves", kit::joined(kit::gp::method, curves)}});
     for (std::size_t i = 0; i < methods.size(); ++i) {
         std::vector<std::vector<double>> d;
         for (const auto& r : table)

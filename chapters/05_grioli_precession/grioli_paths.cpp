@@ -169,7 +169,6 @@ void draw_panel(kit::Figure& fig, const Paths& P, const Vec3& b, int panel) {
     fig.data({{P.cm_exact[0].x(), P.cm_exact[0].y(), P.cm_exact[0].z()},
               {},
               {P.tip_exact[0].x(), P.tip_exact[0].y(), P.tip_exact[0].z()}});
-    fig << "unset arrow\n";
 }
 
 void draw(kit::Scene& scene, const Both& r) {
@@ -178,7 +177,6 @@ void draw(kit::Scene& scene, const Both& r) {
     fig.script(kit::gp::grioli_paths);
     draw_panel(fig, r.ccw, r.p.b, 0);
     draw_panel(fig, r.cw, r.p.b, 1);
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -1,5 +1,5 @@
 # two_precessions.svg (grioli_paths.cpp): the two senses of Theorem 1 side by side, one panel
-# each (grioli_paths.panel.gp); the scene ends the multiplot.
+# each (grioli_paths.panel.gp); the kit ends the multiplot.
 set multiplot layout 1,2 title 'The two regular precessions of Theorem 1, one period, in a lab with k up'
 set view 66, 32, 1.45, 1.0
 set view equal xyz

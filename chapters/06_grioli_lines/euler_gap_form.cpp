@@ -324,7 +324,7 @@ void report(kit::Scene& scene, const Params& p, const std::vector<std::vector<do
 void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, const Summary& s, int panel) {
     const std::string dominated =
         s.unstable > 0 && s.dominated == s.unstable ? "\\nat ×, the error is dominated by the instability" : "";
-    std::string curves;
+    std::vector<kit::Fill> curves;
     std::vector<std::vector<std::vector<double>>> blocks;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         std::vector<std::vector<double>> g, n, u;
@@ -335,17 +335,16 @@ void draw_panel(kit::Figure& fig, const std::vector<std::vector<double>>& rows, 
             const double nv = panel == 0 ? (std::isnan(r[9]) ? 30.0 : r[9]) : (std::isnan(r[10]) ? nan_ : r[10]);
             if (!std::isnan(nv)) n.push_back({r[1], std::max(nv, 1e-12)});
         }
-        const std::string ls = "ls " + std::to_string(b + 1);
-        curves += "'-' with linespoints " + ls + " title " + kit::quoted("gaps, " + bodies[b].name) + ", ";
-        curves += "'-' with linespoints " + ls + " dt 2 pt 6 title " + kit::quoted("naive, " + bodies[b].name) + ", ";
-        curves += "'-' with points " + ls + " pt 2 ps 1.2 notitle, ";
+        curves.push_back({{"ls", std::to_string(b + 1)},
+                          {"gaps", kit::quoted("gaps, " + bodies[b].name)},
+                          {"naive", kit::quoted("naive, " + bodies[b].name)}});
         blocks.push_back(g), blocks.push_back(n),
             blocks.push_back(u.empty() ? std::vector<std::vector<double>>{{nan_, nan_}} : u);
     }
     if (panel == 0)
-        fig.script(kit::gp::error, {{"dominated", dominated}, {"curves", curves}});
+        fig.script(kit::gp::error, {{"dominated", dominated}, {"curves", kit::joined(kit::gp::body, curves)}});
     else
-        fig.script(kit::gp::time, {{"curves", curves}});
+        fig.script(kit::gp::time, {{"curves", kit::joined(kit::gp::body, curves)}});
     for (const auto& bl : blocks) fig.data(bl);
 }
 
@@ -355,7 +354,6 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
     fig.script(kit::gp::euler_gap_form, {{"periods", std::to_string(p.periods)}});
     draw_panel(fig, rows, s, 0);
     draw_panel(fig, rows, s, 1);
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -162,7 +162,6 @@ void draw(kit::Scene& scene, const BodyAtG& b, const std::vector<Line>& lines, c
         fig.script(kit::gp::curves);
         for (int rep = 0; rep < 6; ++rep) fig.data(c.curves[l]);
     }
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -124,7 +124,6 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<std::vector<doub
     for (int rep = 0; rep < 6; ++rep) fig.data(rows);
     fig.script(kit::gp::gap);
     for (int rep = 0; rep < 4; ++rep) fig.data(rows);
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

@@ -1,6 +1,6 @@
 # tilt_on_grioli_lines.svg (tilt_on_grioli_lines.cpp), panel (a): the two sides of Theorem 1's
 # condition on a Grioli line and on lines tilted off it; the scene sends its table once per
-# curve, then panel (b) (tilt_on_grioli_lines.gap.gp), and ends the multiplot.
+# curve, then panel (b) (tilt_on_grioli_lines.gap.gp), and the kit ends the multiplot.
 set encoding utf8
 set multiplot layout 1,2
 set logscale x

@@ -430,34 +430,25 @@ void draw_perturbations(kit::Scene& scene, const Perturbed& P) {
     const auto& curves = P.curves;
     kit::Figure fp(scene, "grioli_perturbations.svg", 1200, 520);
     if (fp.enabled()) {
-        std::string plot;
-        std::vector<std::vector<std::vector<double>>> blocks;
         const char* colours[] = {"#000000", "#0072B2", "#56B4E9", "#009E73", "#E69F00", "#D55E00"};
-        const std::size_t first = 3 * (bodies.size() - 1);  // the most unstable body goes right
-        for (std::size_t i = 0; i < first; ++i) {
-            const std::size_t b = i / 3;
-            plot += std::string("'-' with lines lc rgb '") + colours[b] + "' lw 1.5 dt " + std::to_string(1 + i % 3) +
-                    (i % 3 == 0 ? " title " + kit::quoted(bodies[b].name) : std::string(" notitle")) + ", ";
-            blocks.push_back(curves[i]);
-        }
-        fp.script(kit::gp::perturbations, {{"curves", plot}});
-        for (const auto& c : blocks) fp.data(c);
+        const std::size_t first = 3 * (bodies.size() - 1);  // three curves a body; the most unstable body goes right
+        std::vector<kit::Fill> plot;
+        for (std::size_t b = 0; b < first / 3; ++b)
+            plot.push_back({{"colour", colours[b]}, {"title", kit::quoted(bodies[b].name)}});
+        fp.script(kit::gp::perturbations, {{"curves", kit::joined(kit::gp::body, plot)}});
+        for (std::size_t i = 0; i < first; ++i) fp.data(curves[i]);
         plot.clear();
-        blocks.clear();
-        const double g = rows[first][7];
         for (std::size_t i = first; i < curves.size(); ++i) {
             std::ostringstream delta;
             delta << rows[i][1];
-            plot += "'-' using 1:($2*" + delta.str() + ") with lines lc rgb '#D55E00' lw 1.5 dt " +
-                    std::to_string(1 + (i - first)) + " title " +
-                    kit::quoted("δ = 10^{" + std::to_string(std::lround(std::log10(rows[i][1]))) + "}") + ", ";
-            blocks.push_back(curves[i]);
+            plot.push_back({{"delta", delta.str()},
+                            {"dt", std::to_string(1 + (i - first))},
+                            {"exponent", std::to_string(std::lround(std::log10(rows[i][1])))}});
         }
         std::ostringstream growth;
-        growth << g;
-        fp.script(kit::gp::unstable, {{"curves", plot}, {"growth", growth.str()}});
-        for (const auto& c : blocks) fp.data(c);
-        fp << "unset multiplot\n";
+        growth << rows[first][7];
+        fp.script(kit::gp::unstable, {{"curves", kit::joined(kit::gp::delta, plot)}, {"growth", growth.str()}});
+        for (std::size_t i = first; i < curves.size(); ++i) fp.data(curves[i]);
         fp.finish();
     }
 }

@@ -228,11 +228,10 @@ void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks
                                 {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
                                 {"orthogonality ‖R^T R − 1‖_F", "defect"},
                                 {"angle between R and the exact R (rad)", "error"}};
+    std::vector<kit::Fill> track_curves;
+    for (const Track& tr : tracks) track_curves.push_back({{"style", tr.style}, {"title", kit::quoted(tr.label)}});
+    const std::string curves = kit::joined(kit::gp::track, track_curves);
     for (int p = 0; p < 4; ++p) {
-        std::string curves;
-        for (const Track& tr : tracks)
-            curves += std::string(curves.empty() ? "" : ", ") + "'-' with lines " + tr.style + " lw 1.6 title " +
-                      kit::quoted(tr.label);
         fig.script(p == 2 ? kit::gp::key_panel : kit::gp::panel,
                    {{"title", kit::quoted(panels[p][0])}, {"ylabel", kit::quoted(panels[p][1])}, {"curves", curves}});
         for (const Track& tr : tracks) {
@@ -247,7 +246,6 @@ void draw(kit::Scene& scene, const Problem& pb, const std::vector<Track>& tracks
             fig.data(rows);
         }
     }
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

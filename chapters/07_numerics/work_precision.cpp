@@ -395,7 +395,7 @@ void report_rhs_cost(kit::Scene& scene, const Sweeps& w) {
 // keeps its line in the key), and rk8pd in grey where it is not one of them.
 void draw_panel(kit::Figure& fig, const Panel& panel, std::map<std::string, std::vector<bench::Point>>& by_method,
                 double floor, double target) {
-    std::string plot;
+    std::vector<kit::Fill> plot, comparison;
     std::vector<std::vector<std::vector<double>>> blocks;
     auto curve = [&](const bench::Method& m) {
         std::vector<std::vector<double>> rows;
@@ -409,20 +409,22 @@ void draw_panel(kit::Figure& fig, const Panel& panel, std::map<std::string, std:
         has_rk8pd = has_rk8pd || m.name == "rk8pd";
         auto rows = curve(m);
         // A method with no run that finished still has its line in the key.
-        plot += "'-' with linespoints " + style(panel, i) + " lw 1.6 ps 0.8 title " +
-                kit::quoted(m.label + (rows.empty() ? " (every run failed)" : "")) + ", ";
+        plot.push_back({{"style", style(panel, i)},
+                        {"title", kit::quoted(m.label + (rows.empty() ? " (every run failed)" : ""))}});
         if (rows.empty()) rows.push_back({1e300, 1e300});
         blocks.push_back(rows);
     }
     if (!has_rk8pd) {
         auto rows = curve(bench::method("rk8pd"));
         if (rows.empty()) rows.push_back({1e300, 1e300});
-        plot += "'-' with lines lc rgb '#b0b0b0' lw 3 title 'GSL rk8pd, for comparison', ";
+        comparison.push_back({});
         blocks.push_back(rows);
     }
-    fig.script(
-        kit::gp::plot,
-        {{"curves", plot}, {"floor", sci(floor, 6)}, {"target", sci(target, 6)}, {"target_text", sci(target, 0)}});
+    fig.script(kit::gp::plot, {{"curves", kit::joined(kit::gp::method, plot)},
+                               {"comparison", kit::joined(kit::gp::rk8pd, comparison, "")},
+                               {"floor", sci(floor, 6)},
+                               {"target", sci(target, 6)},
+                               {"target_text", sci(target, 0)}});
     for (const auto& rows : blocks) fig.data(rows);
 }
 
@@ -461,7 +463,6 @@ void draw_work_precision(kit::Scene& scene, const Sweeps& w) {
                         {"title", kit::quoted(panel.title)}});
             draw_panel(fig, panel, points[sc.name], floor, target);
         }
-        fig << "unset multiplot\n";
         fig.finish();
     }
 }
@@ -479,7 +480,7 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
                 const char* titles[3][2] = {{"energy: |H − H(0)| / (T(0) + f)", "energy drift"},
                                             {"vertical angular momentum ({/:Bold k}, RJΩ)", "drift / |JΩ(0)|"},
                                             {"orthogonality: ‖R^T R − 1‖_F", "orthogonality defect"}};
-                std::string plot;
+                std::vector<kit::Fill> plot;
                 std::vector<std::vector<std::vector<double>>> blocks;
                 for (const Panel& family : by_family)
                     for (std::size_t i = 0; i < family.methods.size(); ++i) {
@@ -492,17 +493,15 @@ void draw_invariants(kit::Scene& scene, const Sweeps& w) {
                                                                                 : p.m.orth,
                                                                    1e-17)});
                         if (rows.empty()) continue;
-                        plot += std::string(plot.empty() ? "" : ", ") + "'-' with linespoints " + style(family, i) +
-                                " lw 1.4 ps 0.6 title " + kit::quoted(m.name);
+                        plot.push_back({{"style", style(family, i)}, {"title", kit::quoted(m.name)}});
                         blocks.push_back(rows);
                     }
                 fig.script(panel == 2 ? kit::gp::invariants_key_panel : kit::gp::invariants_panel,
                            {{"title", kit::quoted(titles[panel][0])},
                             {"ylabel", kit::quoted(titles[panel][1])},
-                            {"curves", plot}});
+                            {"curves", kit::joined(kit::gp::invariant, plot)}});
                 for (const auto& rows : blocks) fig.data(rows);
             }
-            fig << "unset multiplot\n";
             fig.finish();
         }
     }

@@ -1,6 +1,6 @@
 # wp_<scenario>.svg (work_precision.cpp): error against run time, one panel per family of
 # methods (work_precision.panel.gp, the last one work_precision.bottom_panel.gp, each with
-# work_precision.plot.gp), sharing the time axis; the scene ends the multiplot.
+# work_precision.plot.gp), sharing the time axis; the kit ends the multiplot.
 set multiplot title @title@
 set logscale xy
 set format x '10^{%L}'

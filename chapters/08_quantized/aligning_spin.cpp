@@ -204,16 +204,13 @@ void report_alignment(kit::Report& report, const Setup& u) {
 void draw_angles(kit::Scene& scene, const Setup& u, const Fan& f) {
     kit::Figure fig(scene, "spin_alignment.svg", 820, 520);
     if (!fig.enabled()) return;
-    std::string curves;
-    for (std::size_t j = 0; j < f.degrees.size(); ++j)
-        curves += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j % 8 + 1) + " lw 2 " +
-                  (j == 0 ? "title '(6.2)'" : "notitle");
-    for (std::size_t j = 0; j < f.degrees.size(); ++j)
-        curves +=
-            ", '-' with lines ls " + std::to_string(j % 8 + 1) + " dt 2 lw 1 " + (j == 0 ? "title 'β = 0'" : "notitle");
-    fig.script(
-        kit::gp::alignment,
-        {{"beta", gnum(u.field.beta)}, {"B", gnum(u.Bn)}, {"e_over_mc", gnum(u.field.e_over_mc)}, {"curves", curves}});
+    std::vector<kit::Fill> after_first;  // the first start's curves are in the script, with their key entries
+    for (std::size_t j = 1; j < f.degrees.size(); ++j) after_first.push_back({{"ls", std::to_string(j % 8 + 1)}});
+    fig.script(kit::gp::alignment, {{"beta", gnum(u.field.beta)},
+                                    {"B", gnum(u.Bn)},
+                                    {"e_over_mc", gnum(u.field.e_over_mc)},
+                                    {"solid", kit::joined(kit::gp::solid, after_first, "")},
+                                    {"plain", kit::joined(kit::gp::plain, after_first, "")}});
     for (const auto& c : f.angle_curves) fig.data(c);
     for (const auto& c : f.plain_curves) fig.data(c);
     fig.finish();
@@ -261,11 +258,10 @@ void draw_sphere(kit::Scene& scene, const Setup& u) {
     std::vector<std::vector<double>> circle;  // beta = 0 from 60 degrees: one circle
     for (int k = 0; k <= 120; ++k)
         circle.push_back(local(rigid::spin_exact(u.plain, u.start(60), u.period * k / 120) / u.s));
-    std::string curves;
+    std::vector<kit::Fill> curves;
     for (std::size_t j = 0; j < shown.size(); ++j)
-        curves +=
-            ", '-' with lines ls " + std::to_string(j + 1) + " lw 2 title '(6.2) from " + gnum(shown[j]) + " degrees'";
-    fs.script(kit::gp::sphere, {{"paths", curves}});
+        curves.push_back({{"ls", std::to_string(j + 1)}, {"degrees", gnum(shown[j])}});
+    fs.script(kit::gp::sphere, {{"paths", kit::joined(kit::gp::path, curves, "")}});
     fs.data(sphere).data(circle);
     for (const auto& p : paths) fs.data(p);
     fs.finish();

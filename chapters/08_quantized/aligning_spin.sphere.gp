@@ -1,5 +1,6 @@
 # spin_sphere.svg (aligning_spin.cpp): the unit sphere in coordinates (e1, e2, b), B up, the
-# circle of β = 0 from 60°, and the paths of (6.2) from the starts shown (the scene's curves).
+# circle of β = 0 from 60°, and the paths of (6.2) from the starts shown (@paths@:
+# aligning_spin.path.gp, one each).
 set view 70, 25, 1.45, 1.45
 set view equal xyz
 set xrange [-1.05:1.05]

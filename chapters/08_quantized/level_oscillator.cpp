@@ -21,10 +21,10 @@ using rigid::VecX;
 
 namespace {
 
-// A number as printf's %g writes it (the figures' titles and keys).
-std::string gnum(double x) {
+// A number as printf writes it, with %g unless told (the figures' titles and keys).
+std::string gnum(double x, const char* format = "%g") {
     char s[32];
-    std::snprintf(s, sizeof s, "%g", x);
+    std::snprintf(s, sizeof s, format, x);
     return s;
 }
 
@@ -204,21 +204,16 @@ void draw_settling(kit::Scene& scene, const Setup& u, const Settling& S) {
     const auto &curves = S.curves, &averaged = S.averaged;
     kit::Figure fig(scene, "level_settling.svg", 820, 520);
     if (fig.enabled()) {
-        std::string plot, averaged_curves;
-        for (std::size_t j = 0; j < starts.size(); ++j) {
-            char title[64];
-            std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}", starts[j]);
-            plot += "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title + "', ";
-        }
-        for (std::size_t j = 1; j < starts.size(); ++j)
-            averaged_curves += ", '-' with lines lc rgb 'black' dt 2 lw 1 notitle";
+        std::vector<kit::Fill> plot, averaged_curves(starts.size() - 1);  // the first averaged curve: in the script
+        for (std::size_t j = 0; j < starts.size(); ++j)
+            plot.push_back({{"ls", std::to_string(j + 1)}, {"start", gnum(starts[j], "%.2g")}});
         fig.script(kit::gp::settling, {{"kappa", gnum(k.kappa)},
                                        {"power", gnum(k.power)},
                                        {"tmax", std::to_string(std::min(T, 40.0))},
                                        {"Emax", std::to_string(levels + 0.2)},
                                        {"levels", std::to_string(levels)},
-                                       {"curves", plot},
-                                       {"averaged", averaged_curves}});
+                                       {"curves", kit::joined(kit::gp::start, plot)},
+                                       {"averaged", kit::joined(kit::gp::averaged, averaged_curves, "")}});
         for (const auto& c : curves) fig.data(c);
         for (const auto& a : averaged) fig.data(a);
         fig.finish();
@@ -232,16 +227,15 @@ void draw_approach(kit::Scene& scene, const Setup& u, const Settling& S) {
     const auto &approach = S.approach, &asymptote = S.asymptote;
     kit::Figure fa(scene, "level_approach.svg", 820, 520);
     if (fa.enabled()) {
-        std::string cmd;
+        std::vector<kit::Fill> curves, asymptotes;
         for (std::size_t j = 0; j < starts.size(); ++j) {
-            char title[64];
-            std::snprintf(title, sizeof title, "E(0) = %.2g E_{0}\u00a0settles on %g E_{0}", starts[j], rows[j][1]);
-            cmd += std::string(j ? ", " : "") + "'-' with lines ls " + std::to_string(j + 1) + " lw 2 title '" + title +
-                   "'";
+            curves.push_back(
+                {{"ls", std::to_string(j + 1)}, {"start", gnum(starts[j], "%.2g")}, {"level", gnum(rows[j][1])}});
+            if (!asymptote[j].empty()) asymptotes.push_back({{"ls", std::to_string(j + 1)}});
         }
-        for (std::size_t j = 0; j < starts.size(); ++j)
-            if (!asymptote[j].empty()) cmd += ", '-' with lines ls " + std::to_string(j + 1) + " dt 2 lw 1 notitle";
-        fa.script(kit::gp::approach, {{"T", std::to_string(T)}, {"curves", cmd}});
+        fa.script(kit::gp::approach, {{"T", std::to_string(T)},
+                                      {"curves", kit::joined(kit::gp::approach_start, curves)},
+                                      {"asymptotes", kit::joined(kit::gp::asymptote, asymptotes, "")}});
         for (const auto& d : approach) fa.data(d);
         for (const auto& as : asymptote)
             if (!as.empty()) fa.data(as);

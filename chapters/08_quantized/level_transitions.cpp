@@ -284,15 +284,13 @@ void draw_kicks(kit::Scene& scene, const Setup& u, const Kicked& kd) {
     const auto& traces = kd.traces;
     kit::Figure fig(scene, "level_transitions.svg", 820, 520);
     if (fig.enabled()) {
-        std::string seed_curves;
-        for (int s = 1; s <= seeds; ++s)
-            seed_curves +=
-                ", '-' with lines ls " + std::to_string(s) + " lw 1.5 title 'kicks, seed " + std::to_string(s) + "'";
+        std::vector<kit::Fill> seed_curves;
+        for (int s = 1; s <= seeds; ++s) seed_curves.push_back({{"seed", std::to_string(s)}});
         fig.script(kit::gp::kicks, {{"eps", gnum(eps)},
                                     {"tau", gnum(tau)},
                                     {"n_start", std::to_string(n_start)},
                                     {"Emax", std::to_string(n_start + 0.4)},
-                                    {"seeds", seed_curves}});
+                                    {"seeds", kit::joined(kit::gp::seed, seed_curves, "")}});
         for (int s = 0; s <= seeds; ++s) fig.data(traces[s].curve);
         fig.finish();
     }
@@ -303,15 +301,10 @@ void draw_escapes(kit::Scene& scene, const Escapes& es) {
     const auto& powers = es.powers;
     kit::Figure fe(scene, "level_escape.svg", 820, 520);
     if (fe.enabled()) {
-        std::string cmd;
-        for (std::size_t j = 0; j < powers.size(); ++j) {
-            char t1[80], t2[80];
-            std::snprintf(t1, sizeof t1, "p = %g, (6.1) integrated", powers[j]);
-            std::snprintf(t2, sizeof t2, "p = %g, averaged equation", powers[j]);
-            cmd += std::string(j ? ", " : "") + "'-' with points ls " + std::to_string(j + 1) + " pt 7 ps 1.2 title '" +
-                   t1 + "', '-' with lines ls " + std::to_string(j + 1) + " dt 2 title '" + t2 + "'";
-        }
-        fe.script(kit::gp::escape, {{"curves", cmd}});
+        std::vector<kit::Fill> pairs;
+        for (std::size_t j = 0; j < powers.size(); ++j)
+            pairs.push_back({{"ls", std::to_string(j + 1)}, {"p", gnum(powers[j])}});
+        fe.script(kit::gp::escape, {{"curves", kit::joined(kit::gp::power, pairs)}});
         for (double p : powers) {
             std::vector<std::vector<double>> pts, line;
             for (const auto& r : escape)

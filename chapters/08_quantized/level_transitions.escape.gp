@@ -1,5 +1,6 @@
 # level_escape.svg (level_transitions.cpp): the time to leave the level after one disturbance,
-# integrated and by the averaged equation, one pair of curves per power p (the scene's).
+# integrated and by the averaged equation, one pair of curves per power p (@curves@:
+# level_transitions.power.gp, one each).
 set title 'Leaving the level E_{n} = 2 E_{0} after one disturbance δ below it'
 set logscale xy
 set format x '10^{%L}'

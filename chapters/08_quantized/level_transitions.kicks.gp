@@ -1,5 +1,5 @@
 # level_transitions.svg (level_transitions.cpp): energy against time without kicks and with
-# kicks, one curve per seed (the scene's); dotted lines at the levels.
+# kicks, one curve per seed (@seeds@: level_transitions.seed.gp, one each); dotted lines at the levels.
 set title 'Kicks q'' += @eps@ N(0,1) every @tau@, starting on E = @n_start@ E_{0}: energy against time'
 set xlabel 't'
 set ylabel 'E / E_{0}'

@@ -174,7 +174,6 @@ void draw(kit::Scene& scene, const Params& p, const std::vector<Problem>& proble
             fig.data(pts);
         }
     }
-    fig << "unset multiplot\n";
     fig.finish();
 }
 

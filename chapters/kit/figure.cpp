@@ -95,7 +95,7 @@ Figure& Figure::data(const std::vector<std::vector<double>>& rows) {
 std::uintmax_t Figure::finish() {
     if (!enabled_ || finished_) return 0;
     finished_ = true;
-    text_ += "unset output\n";
+    text_ += gp::figure_end.text;
     std::error_code ec;
     fs::remove(staged_path_, ec);
     if (!support::write_file(script_path_, text_))

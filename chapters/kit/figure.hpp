@@ -8,7 +8,17 @@
 //   kit::Figure fig(scene, "omega_error.svg");
 //   fig.script(kit::gp::error_vs_step, {{"title", title}});
 //   fig.data(rows);          // one inline data block, ended by 'e' (gnuplot-iostream's send1d text)
-//   fig.finish();            // runs gnuplot, checks the file, stages it
+//   fig.finish();            // ends any multiplot (kit figure_end.gp), runs gnuplot, checks the file, stages it
+//
+// A plot of as many curves as the run has: the curve's clause is a .gp of its own (one line,
+// after its comments), filled once per curve and joined into a placeholder of the plot's script:
+//
+//   // omega_finite_difference.stencil.gp: '-' using 1:2 with linespoints ls @ls@ title '@title@'
+//   std::vector<kit::Fill> curves;
+//   for (...) curves.push_back({{"ls", ...}, {"title", ...}});
+//   fig.script(kit::gp::error_vs_step, {{"stencils", kit::joined(kit::gp::stencil, curves)}});
+//
+// (the same text a gnuplot loop would give, but spelt out: the live book reads each plot's '-'.)
 //
 // The scripts: every <scene>.<figure>.gp (or <scene>.gp) in a scene's folder becomes
 // kit::gp::<figure> (or kit::gp::<scene>) in the generated header <scene>.gp.hpp
@@ -16,7 +26,7 @@
 // is @name@ (letters, digits, _), a syntax gnuplot's own text never has; a placeholder left
 // unfilled, or a value for one the script does not have, throws std::logic_error. The filling is
 // the support library's (cmake/tools/support/script.hpp), which the grading run's class report
-// uses too: kit::Script, kit::Fill and kit::filled are its names here.
+// uses too: kit::Script, kit::Fill, kit::filled and kit::joined are its names here.
 //
 // What it guarantees, because gnuplot itself does not (see research/grading-anchors.md, 4):
 //   * gnuplot runs as `gnuplot -d SCRIPT` (no user init files; started from its argument
@@ -48,6 +58,7 @@ namespace kit {
 using Script = support::Script;
 using Fill = support::Fill;
 using support::filled;
+using support::joined;
 
 // How a figure is drawn: gnuplot's `set terminal` line, and whether the workbook's one style
 // (figures/style.gp) is loaded after it.
@@ -69,7 +80,7 @@ public:
     bool enabled() const { return enabled_; }
     // The script, filled (see filled()).
     Figure& script(const Script& script, const Fill& values = {});
-    // A few lines of gnuplot the scene builds itself (a plot clause with one title per curve).
+    // Text the kit builds itself (the motion GIF's frames); a scene's gnuplot is in its .gp files.
     Figure& operator<<(const std::string& commands);
     // One inline data block for a `plot '-'` or `splot '-'`: one line per row, every number
     // with 19 significant digits (gnuplot reads back the very doubles); an empty row makes a

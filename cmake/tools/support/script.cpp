@@ -67,6 +67,18 @@ std::string filled(const Script& script, const Fill& values) {
     return out;
 }
 
+std::string joined(const Script& clause, const std::vector<Fill>& items, const std::string& separator) {
+    std::string_view text = clause.text;
+    while (comment_at(text, 0)) text.remove_prefix(std::min(text.find('\n'), text.size() - 1) + 1);
+    if (!text.empty() && text.back() == '\n') text.remove_suffix(1);
+    if (text.find('\n') != std::string_view::npos)
+        throw std::logic_error(message(clause, "a clause must be one line of gnuplot (after its comments)"));
+    const Script line{clause.name, text};
+    std::string out;
+    for (std::size_t k = 0; k < items.size(); ++k) out += (k ? separator : "") + filled(line, items[k]);
+    return out;
+}
+
 std::string gnuplot_quoted(const std::string& text) {
     std::string out = "'";
     for (const char c : text) out += (c == '\'') ? std::string("''") : std::string(1, c);

@@ -28,6 +28,12 @@ using Fill = std::vector<std::pair<std::string, std::string>>;
 // does a comment line (its first non-blank a '#'), which may name placeholders.
 std::string filled(const Script& script, const Fill& values = {});
 
+// A list placeholder's value: `clause` (a script of one line of gnuplot, after any comment lines;
+// a plot's curve, say) filled once per item of `items`, the copies joined by `separator` on one
+// line, as a plot command needs them. Empty for no items; throws std::logic_error as filled()
+// does, and for a clause of more than one line.
+std::string joined(const Script& clause, const std::vector<Fill>& items, const std::string& separator = ", ");
+
 // gnuplot's way of writing a string literal: single quotes, inner quotes doubled.
 std::string gnuplot_quoted(const std::string& text);
 

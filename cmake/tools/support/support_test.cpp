@@ -143,3 +143,14 @@ TEST_CASE("gnuplot scripts: a string literal doubles its quotes") {
     CHECK(support::gnuplot_quoted("it's") == "'it''s'");
     CHECK(support::gnuplot_quoted("") == "''");
 }
+
+TEST_CASE("gnuplot scripts: a clause is filled once per item and joined on one line, its comments dropped") {
+    const support::Script clause{"curve.gp", "# one curve per method\n'-' with lines ls @ls@ title '@title@'\n"};
+    CHECK(support::joined(clause, {{{"ls", "1"}, {"title", "a"}}, {{"ls", "2"}, {"title", "b"}}}) ==
+          "'-' with lines ls 1 title 'a', '-' with lines ls 2 title 'b'");
+    CHECK(support::joined(clause, {{{"ls", "1"}, {"title", "a"}}}, " | ") == "'-' with lines ls 1 title 'a'");
+    CHECK(support::joined(clause, {}).empty());
+    CHECK_THROWS_WITH_AS(support::joined(clause, {{{"ls", "1"}}}), doctest::Contains("@title@"), std::logic_error);
+    const support::Script two{"planted.gp", "'-' with lines\n'-' with points\n"};
+    CHECK_THROWS_WITH_AS(support::joined(two, {{}}), doctest::Contains("one line"), std::logic_error);
+}
