@@ -78,8 +78,9 @@ std::vector<RegularPrecession> precessions(const Params& prm) {
 constexpr int n = 240;  // instants over one precession period
 
 // One case: omega(t) over a precession period (closed form, timed), and its checks against the
-// finite differences of R: angle(a, b), alpha, beta, omega error, the deviations of (b, omega)
-// and |omega|^2, and where the cones touch.
+// finite differences of R: angle(a, b), alpha, beta, omega error (relative), the deviations of
+// (b, omega) and |omega|^2, where the cones touch, and |omega|^2 = |Omega|^2 itself (1.6 as
+// corrected: alpha^2 + beta^2 + 2 alpha beta (a, b), in rad^2/s^2).
 struct CaseResult {
     std::vector<Vec3> omega;
     std::vector<double> row;
@@ -110,7 +111,7 @@ CaseResult compute(const RegularPrecession& p) {
         (Rs * rigid::precession_body_angular_velocity(p, t_star) - rigid::precession_lab_angular_velocity(p, t_star))
             .norm();
     const double ab = p.a.dot(p.b);
-    r.row = {std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta, e, dev_axial, dev_norm, touch};
+    r.row = {std::acos(ab) * 180 / std::numbers::pi, p.alpha, p.beta, e, dev_axial, dev_norm, touch, w2};
     return r;
 }
 
@@ -169,12 +170,16 @@ void report(kit::Scene& scene, const std::vector<CaseResult>& results) {
     }
     scene.report.headline("max |omega (closed form) - omega from finite differences of R(t)| / |omega|, three cases",
                           err, run_time / 3);
-    scene.report.table("cases",
-                       {"angle_ab_deg", "alpha", "beta", "omega_error", "b_dot_omega_dev", "omega2_dev", "cones_touch"},
-                       summary);
+    scene.report.table(
+        "cases",
+        {"angle_ab_deg", "alpha", "beta", "omega_error", "b_dot_omega_dev", "omega2_dev", "cones_touch", "omega2"},
+        summary);
     scene.report.note(
         "figure: grey = space cone (rays to omega(t)), blue = its rim; light blue = body cone at t* = 0.3 "
         "T_b, orange = its rim; green = path of a body point; black = omega(t*), where the cones touch");
+    scene.report.note(
+        "units: omega_error relative (dimensionless); b_dot_omega_dev and cones_touch rad/s; omega2_dev and "
+        "omega2 = |omega|^2 = |Omega|^2 rad^2/s^2");
 }
 
 // The book's motion viewer: case 2 over two precession periods, with its two cones (a box
