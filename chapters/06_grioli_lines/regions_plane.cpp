@@ -6,6 +6,11 @@
 // grid over the plane, region() must agree with the order of Eigen's moments, or of the binary128
 // moments where two of Eigen's are within its round-off (a nearly symmetric body). And the Grioli
 // lines must be the normals of the circular sections of the inertia ellipsoid at G.
+//
+// One suspension point O = G + L z, z a Grioli line (--line) turned by --off radians (the book's
+// live page moves it): the moments at O, its region, and Theorem 1's condition there. The gap
+// cos^2 phi - (B - A)/(C - A) is checked against its closed form (dCB z_A^2 - dBA z_C^2)/(C - A),
+// zero only on the Grioli lines.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,12 +28,22 @@ struct Params {
     rigid::BodyAtG body = ch6::default_body;
     int lines = 64;
     int grid = 121;
+    int line = 1;    // the suspension point: on the Grioli line x_C = line k x_A,
+    double off = 0;  // turned by off rad (> 0 towards x_C, < 0 towards x_A),
+    double L = 1;    // at the distance L from G
 };
 
 void declare(kit::Options& opts, Params& p) {
     ch6::body_options(opts, p.body);
     opts.integer("lines", &p.lines, "lines below the critical angle on which B = C is found by bisection", 4, 4096)
-        .integer("grid", &p.grid, "grid points per side for the region check", 11, 1001);
+        .integer("grid", &p.grid, "grid points per side for the region check", 11, 1001)
+        .integer("line", &p.line, "the suspension point's Grioli line (5.15): +1 for x_C = +k x_A, -1 for x_C = -k x_A",
+                 -1, 1)
+        .real("off", &p.off,
+              "the angle (rad) between the suspension point's line OG and the Grioli line: 0 on it, > 0 towards x_C, "
+              "< 0 towards x_A",
+              kit::between(-0.5, 0.5))
+        .real("L", &p.L, "the distance from G to the suspension point O", kit::between(1e-3, 1e3));
 }
 
 namespace {
@@ -163,6 +178,49 @@ double grioli_vs_sections(const BodyAtG& b) {
     return angle;
 }
 
+// The suspension point O = G + L z of --line, --off, --L, and Theorem 1's condition there.
+struct Point {
+    Vec3 z;
+    double L;
+    int region;
+    rigid::ShiftedMoments m;
+    rigid::Cos2Sin2 tilt, ratio;
+    double gap, gap_closed;  // cos^2 phi - (B - A)/(C - A): measured, and its closed form
+};
+
+Point suspension_point(const BodyAtG& b, const Params& p) {
+    if (p.line == 0) throw kit::BadInput("--line: got 0; it must be +1 or -1");
+    const Vec3 zg = rigid::grioli_direction(b, p.line);
+    const Vec3 z = p.off == 0 ? zg : rigid::shift_direction(std::atan2(zg.z(), zg.x()) + p.line * p.off);
+    Point o{z, p.L, rigid::region(b, p.L * z.x(), p.L * z.z()), rigid::shifted_moments(b, p.L, z), {}, {}, 0, 0};
+    o.tilt = rigid::smallest_axis_tilt(b, p.L, z);
+    o.ratio = rigid::grioli_ratio(o.m);
+    o.gap = o.tilt.cos2 - o.ratio.cos2;
+    // (5.12) - (5.13): ((C_g - A_g) cos 2phi_g - (2B_g - A_g - C_g)) / (2 sqrt D), written on the gaps.
+    const double dBA = b.B_g - b.A_g, dCB = b.C_g - b.B_g;
+    o.gap_closed = (dCB * z.x() * z.x() - dBA * z.z() * z.z()) / o.m.C_minus_A;
+    return o;
+}
+
+void report_point(kit::Scene& scene, const Params& p, const Point& o) {
+    scene.report.add("point_x_A", o.L * o.z.x(), "the suspension point O - G along x_A (--line, --off, --L)");
+    scene.report.add("point_x_C", o.L * o.z.z(), "the suspension point O - G along x_C");
+    scene.report.add("point_A", o.m.A, "the smallest moment at O (5.3)");
+    scene.report.add("point_B", o.m.B, "B_g + h, about the normal of the plane: above C in the regions V, VI");
+    scene.report.add("point_C", o.m.C, "(5.3)");
+    scene.report.add("point_region", o.region, "region() of O: 1..6 for I..VI, 0 on a boundary");
+    scene.report.add("point_cos2_phi", o.tilt.cos2, "(5.12): the smallest axis at O against the line OG");
+    scene.report.add("point_ratio", o.ratio.cos2, "(5.13): (B - A)/(C - A) at O");
+    scene.report.add("point_gap", o.gap, "cos^2 phi - (B - A)/(C - A): Theorem 1 asks for 0");
+    scene.report.add("point_gap_closed_form", o.gap_closed, "(dCB z_A^2 - dBA z_C^2)/(C - A): 0 only on a Grioli line");
+    scene.report.add("point_precesses", p.off == 0 ? 1 : 0,
+                     "1: O on a Grioli line (--off 0), Theorem 1's precession exists; 0: off it, none exists (the "
+                     "gap is not 0, however small)");
+    if (!(std::abs(o.gap - o.gap_closed) <= 1e-12))
+        throw kit::CheckFailed("at the suspension point, cos^2 phi - (B - A)/(C - A) = " + std::to_string(o.gap) +
+                               " is not its closed form " + std::to_string(o.gap_closed));
+}
+
 void report(kit::Scene& scene, const BodyAtG& b, const Crossings& err, const RegionCheck& r) {
     scene.report.headline("max |(5.7) - 1| where the eigen-solver finds B = C (bisection), over the lines",
                           err.hyperbola, r.t_region);
@@ -238,11 +296,11 @@ void region_labels(kit::Figure& fig, const BodyAtG& b, double R) {
     label("VI", 0.0, -0.5 * (std::min(yv, R) + R));
 }
 
-// Figure 5.
-void draw(kit::Scene& scene, const BodyAtG& b) {
+// Figure 5, with the suspension point O (a segment from G to it).
+void draw(kit::Scene& scene, const BodyAtG& b, const Point& o) {
     kit::Figure fig(scene, "regions_plane.svg", 640, 720);
     if (!fig.enabled()) return;
-    const double R = plane_radius(b);
+    const double R = std::max(plane_radius(b), 1.15 * o.L);
     const Regions g = regions(b, R);
     const auto normals = rigid::circular_section_normals(Vec3(b.A_g, b.B_g, b.C_g).asDiagonal());
     const Vec3 n0 = 0.6 * R * normals[0], n1 = 0.6 * R * normals[1];
@@ -255,6 +313,8 @@ void draw(kit::Scene& scene, const BodyAtG& b) {
                                {"n1", std::to_string(n1.x()) + "," + std::to_string(n1.z())}});
     fig.data(g.right).data(g.left).data(g.near_up).data(g.near_down).data(g.far_up).data(g.far_down);
     fig.data(g.branch_up).data(g.branch_down).data(g.asym1).data(g.asym2);
+    const std::vector<double> O{o.L * o.z.x(), o.L * o.z.z()};
+    fig.data(Curve{{0, 0}, O}).data(Curve{O});
     fig.finish();
 }
 
@@ -269,7 +329,9 @@ int main(int argc, char** argv) {
         const BodyAtG b = body(p.body);
         const Crossings err = crossings(b, p.lines);
         const RegionCheck r = check_regions(b, p.grid);
+        const Point o = suspension_point(b, p);
         report(scene, b, err, r);
-        draw(scene, b);
+        report_point(scene, p, o);
+        draw(scene, b, o);
     });
 }
