@@ -36,6 +36,7 @@ struct Params {
     double tol = 1e-12;
     int samples = 200;
     std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
+    double off_axis = 0.05;   // --motion: each start's component along the other two axes / its spin
 };
 
 void declare(kit::Options& opts, Params& p) {
@@ -46,15 +47,20 @@ void declare(kit::Options& opts, Params& p) {
                 "GSL method for the integrations (rk4 here is GSL's; the student's RK4 is in the other scenes)")
         .real("tol", &p.tol, "GSL tolerance (relative and absolute)", kit::between(1e-14, 1e-3))
         .integer("samples", &p.samples, "output times per period", 10, 100000)
-        .file("motion", &p.motion_file, kit::motion_help);
+        .file("motion", &p.motion_file, kit::motion_help)
+        .real("off-axis", &p.off_axis,
+              "with --motion: each body's Omega(0) along the two other axes, as a fraction of its spin",
+              kit::between(1e-4, 0.2));
 }
 
 void check(const kit::Options& o, const Params& p) {
     kit::require_moments(p.I, "I", {kit::Order::distinct});  // polhodes about two axes
     // The work: 2 curves polhodes, one period each (about 8 radians of phase; more near the
     // separatrix), 3 timed runs, at the method's steps per radian for this tolerance; with
-    // --motion, three bodies over the middle-axis period (about 50 radians each).
-    const double motion = p.motion_file.empty() ? 0.0 : 3 * 60.0;
+    // --motion, three bodies over the middle-axis period (about 50 radians each at --off-axis
+    // 0.05; the period grows as the log of 1 / off-axis).
+    const double longer = std::max(1.0, std::log(1 / p.off_axis) / std::log(20.0));
+    const double motion = p.motion_file.empty() ? 0.0 : 3 * 60.0 * longer;
     kit::require_budget(
         o, {(2.0 * p.curves * 3 * 12 + motion) * scene3::steps_per_radian(p.method, p.tol) + 6.0 * p.curves * p.samples,
             1.5e-6, "steps", "--curves, --tol, --method, --samples, --motion"});
@@ -185,7 +191,7 @@ void draw(kit::Scene& scene, const Params& p, const Polhodes& r) {
 
 // ------------------------------------------------------------------ the book's motion viewer
 // With --motion: three boxes with the moments I and the energy E, each started spinning about
-// one principal axis with a small component (0.05 of the spin) along the other two, integrated
+// one principal axis with a small component (--off-axis of the spin) along the other two, integrated
 // as the polhodes are (--method, --tol) over one period of the middle-axis motion. Each lab is
 // turned so that the body's angular momentum M, fixed in space, points up.
 void write_axes_motion(kit::Scene& scene, const Params& p) {
@@ -195,7 +201,7 @@ void write_axes_motion(kit::Scene& scene, const Params& p) {
     const char* names[] = {"smallest", "middle", "largest"};
     std::vector<Vec3> starts;
     for (int j = 0; j < 3; ++j) {
-        Vec3 w = Vec3::Constant(0.05);
+        Vec3 w = Vec3::Constant(p.off_axis);
         w(axes[j]) = 1;
         starts.push_back(w * std::sqrt(2 * p.energy / w.dot(I.cwiseProduct(w))));  // energy E
     }
@@ -228,9 +234,9 @@ void write_axes_motion(kit::Scene& scene, const Params& p) {
         "the free body spun about each principal axis, slightly off: smallest (left), middle, largest "
         "(right)";
     bodies[0].parameters = fmt::format(
-        "I = ({:g}, {:g}, {:g}), E = {:g}, each Ω(0) along its axis with 0.05 of it along the other two; "
+        "I = ({:g}, {:g}, {:g}), E = {:g}, each Ω(0) along its axis with {:g} of it along the other two; "
         "t from 0 to {:.3g}, one period of the middle-axis motion; each lab turned so that M points up",
-        I(0), I(1), I(2), p.energy, T);
+        I(0), I(1), I(2), p.energy, p.off_axis, T);
     bodies[0].error = err;
     bodies[0].error_measure = fmt::format(
         "max geodesic angle (rad) between the integrated R(t) ({}, tolerance {:g}) "
