@@ -53,19 +53,35 @@ struct Run {
     long work = 0;  // right-hand side calls
 };
 
-// method: "rk4" = the student's integrate_rk4 with step h; anything else = that GSL method at tol.
-inline Run integrate(const Vec3& I, const Vec3& Omega0, const std::vector<double>& times, const std::string& method,
-                     double tol_or_h) {
-    Run run;
-    run.Omega.reserve(times.size());
-    run.R.reserve(times.size());
-    const rigid::OdeRhs f = rigid::free_body_equations(I);
-    const auto observe = [&](double, const VecX& y) {
+// Records each output time's Omega and R into run.
+inline rigid::OdeObserver recorder(Run& run, std::size_t n) {
+    run.Omega.reserve(n);
+    run.R.reserve(n);
+    return [&run](double, const VecX& y) {
         const rigid::BodyState s = rigid::unpack(y);
         run.Omega.push_back(s.Omega);
         run.R.push_back(s.R);
     };
-    run.work = kit::integrate_by_name(f, rigid::pack({Omega0, Mat3::Identity()}), times, observe, method, tol_or_h);
+}
+
+// method: "rk4" = the student's integrate_rk4 with step h; anything else = that GSL method at tol.
+inline Run integrate(const Vec3& I, const Vec3& Omega0, const std::vector<double>& times, const std::string& method,
+                     double tol_or_h) {
+    Run run;
+    const rigid::OdeObserver observe = recorder(run, times.size());
+    run.work = kit::integrate_by_name(rigid::free_body_equations(I), rigid::pack({Omega0, Mat3::Identity()}), times,
+                                      observe, method, tol_or_h);
+    return run;
+}
+
+// Always a GSL method by name, at tolerance tol: "rk4" is GSL's (polhodes --method).
+inline Run integrate_gsl(const Vec3& I, const Vec3& Omega0, const std::vector<double>& times, const std::string& method,
+                         double tol) {
+    Run run;
+    const rigid::OdeObserver observe = recorder(run, times.size());
+    run.work = rigid::integrate_gsl(rigid::free_body_equations(I), rigid::pack({Omega0, Mat3::Identity()}), times,
+                                    observe, {.method = method, .rel_tol = tol, .abs_tol = tol})
+                   .rhs_calls;
     return run;
 }
 

@@ -84,7 +84,7 @@ void integrate_polhode(const Params& p, double D, Polhodes& out) {
     const auto exact = rigid::free_body_motion(I, w0);
     const auto times = rigid::linspace(0, exact.period, p.samples);
     scene3::Run run;
-    out.run_time += kit::min_time([&] { run = scene3::integrate(I, w0, times, p.method, p.tol); }, 3);
+    out.run_time += kit::min_time([&] { run = scene3::integrate_gsl(I, w0, times, p.method, p.tol); }, 3);
     out.work += run.work;
     const double E0 = rigid::rotational_energy(I, w0), M0 = rigid::angular_momentum_squared(I, w0);
     double e = 0;
@@ -210,7 +210,7 @@ void write_axes_motion(kit::Scene& scene, const Params& p) {
     std::vector<kit::Motion> bodies;
     double err = 0;
     for (int j = 0; j < 3; ++j) {
-        const scene3::Run run = scene3::integrate(I, starts[j], times, p.method, p.tol);
+        const scene3::Run run = scene3::integrate_gsl(I, starts[j], times, p.method, p.tol);
         const auto exact = rigid::free_body_exact_rotations(rigid::free_body_motion(I, starts[j]), times);
         const rigid::Mat3 W =
             Eigen::Quaterniond::FromTwoVectors(I.cwiseProduct(starts[j]), Vec3::UnitZ()).toRotationMatrix();
