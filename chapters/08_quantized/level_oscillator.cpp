@@ -32,21 +32,23 @@ std::string gnum(double x, const char* format = "%g") {
 struct Params {
     scene8::OscillatorParams osc;
     double T = 200;
-    long outputs = 800, repeats = 3;
+    long outputs = 800, repeats = 3, periods = 50;
 };
 
 void declare(kit::Options& opts, Params& p) {
     scene8::oscillator_options(opts, p.osc);
     opts.real("T", &p.T, "time span", kit::between(1e-2, 1e6))
         .integer("outputs", &p.outputs, "output times", 10, 100000)
-        .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
+        .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50)
+        .integer("periods", &p.periods, "periods on the level over which the period is measured (400 outputs each)", 3,
+                 1000);
 }
 
 struct Setup {
     rigid::Oscillator osc;
     rigid::LevelFriction k;
     double T, w;  // w = omega / sqrt(m), the natural frequency
-    int repeats;
+    int repeats, periods;
     std::vector<double> times;
 };
 
@@ -56,12 +58,13 @@ Setup setup(const kit::Options& o, const Params& p) {
             p.T,
             0,
             static_cast<int>(p.repeats),
+            static_cast<int>(p.periods),
             rigid::linspace(0, p.T, static_cast<int>(p.outputs))};
     u.w = u.osc.omega / std::sqrt(u.osc.m);
     // The work: the motion on a level and six between levels (`repeats` timed runs each), six
-    // averaged ones, over T; and 50 periods for the period. The phase turned sets the steps.
-    kit::require_budget(o, {(7.0 * u.repeats + 6) * u.T * u.w + 50 * 2 * std::numbers::pi, scene8::seconds_per_radian,
-                            "radians of phase", "--T, --omega, --m, --repeats"});
+    // averaged ones, over T; and `periods` periods for the period. The phase turned sets the steps.
+    kit::require_budget(o, {(7.0 * u.repeats + 6) * u.T * u.w + u.periods * 2 * std::numbers::pi,
+                            scene8::seconds_per_radian, "radians of phase", "--T, --omega, --m, --repeats, --periods"});
     kit::require_budget(
         o, {(7.0 * u.repeats + 6) * double(u.times.size()), 4e-6, "output times (all runs)", "--outputs, --repeats"});
     return u;
@@ -96,8 +99,9 @@ void report_on_level(kit::Report& report, const Setup& u) {
     report.add("on_level_energy_drift", on_drift, "max |E(t) - 2 E0| / (2 E0) on the level");
     report.add("error_if_frequency_were_omega", naive_err, "the same motion against q0 cos(omega t)");
 
-    // The period, from the zero crossings of q on a fine grid over 50 periods (linear interpolation).
-    const auto fine = rigid::linspace(0, 50 * 2 * std::numbers::pi / w, 20000);
+    // The period, from the zero crossings of q on a fine grid over u.periods periods, 400 points
+    // each (linear interpolation).
+    const auto fine = rigid::linspace(0, u.periods * 2 * std::numbers::pi / w, 400 * u.periods);
     std::vector<double> crossings;
     double tp = 0, qp = y_on(0);
     rigid::integrate_gsl(
