@@ -259,7 +259,7 @@ double difference(const LongState& a, const LongState& b, long double scale) {
 
 }  // namespace
 
-Reference reference(const Scenario& sc, bool self_check) {
+Reference reference(const Scenario& sc, bool self_check, bool conditioning) {
     Reference r;
     r.h = 0.1 / sc.omega;
     const std::vector<double> times = sc.times();
@@ -290,6 +290,7 @@ Reference reference(const Scenario& sc, bool self_check) {
         },
         r.h, r.order);
     for (std::size_t i = 0; i < L.size(); ++i) r.double_floor = std::max(r.double_floor, difference(L[i], D[i], scale));
+    if (!conditioning) return r;
     // The conditioning: the same reference from an initial state changed by delta = 1e-9 (Omega by
     // delta |Omega| along a fixed direction, R by a turn of delta), in long double.
     const double delta = 1e-9;

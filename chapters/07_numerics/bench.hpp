@@ -90,7 +90,8 @@ struct Reference {
                                    // (largest over the outputs; measured with a change of 1e-9)
     double expected_floor = 0;     // Brouwer's estimate for that floor: eps kappa sqrt(steps)
 };
-Reference reference(const Scenario& sc, bool self_check);
+// conditioning false: kappa and expected_floor are left 0 (one long-double run fewer).
+Reference reference(const Scenario& sc, bool self_check, bool conditioning = true);
 // end snippet
 
 // How much work a sweep may do.

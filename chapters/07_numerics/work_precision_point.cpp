@@ -37,12 +37,14 @@ void declare(kit::Options& opts, Params& p) {
         .integer("repeats", &p.repeats, "timing repetitions (the minimum is kept)", 1, 50);
 }
 
-// The long-double reference of a scenario, computed once per process: the book's page keeps its
-// module loaded and runs the scene again at each move of a control, with the same reference.
+// The long-double reference of a scenario (without its conditioning, which the scene does not
+// report), computed once per process: the book's page keeps its module loaded and runs the scene
+// again at each move of a control, with the same reference (long double is binary128 in
+// WebAssembly, in software: seconds there).
 const bench::Reference& reference_of(const bench::Scenario& sc) {
     static std::map<std::string, bench::Reference> cache;
     auto it = cache.find(sc.name);
-    if (it == cache.end()) it = cache.emplace(sc.name, bench::reference(sc, false)).first;
+    if (it == cache.end()) it = cache.emplace(sc.name, bench::reference(sc, false, false)).first;
     return it->second;
 }
 
