@@ -85,7 +85,12 @@ def agree(spec, page_value, native_value):
     if not isinstance(page_value, (int, float)):
         return "page shows %r, native %r" % (page_value, native_value)
     d = abs(page_value - native_value)
-    if "abs" in spec:
+    # abs, rel, or both: |page - native| <= abs + rel |native| (an integrated error agrees to a
+    # relative tolerance far above round-off and to an absolute one near it).
+    if "abs" in spec and "rel" in spec:
+        ok = d <= spec["abs"] + spec["rel"] * abs(native_value)
+        tol = "absolute %g + relative %g" % (spec["abs"], spec["rel"])
+    elif "abs" in spec:
         ok = d <= spec["abs"]
         tol = "absolute %g" % spec["abs"]
     else:

@@ -21,7 +21,8 @@ find_program(WORKBOOK_EMXX em++)
 set(WORKBOOK_LIVE_GSL "" CACHE PATH
     "prefix of a GSL built with emscripten (include/gsl, lib/libgsl.a, lib/libgslcblas.a) for live scenes that need GSL")
 
-# Every library a target links, itself included, that holds workbook sources (rigid_*).
+# Every library a target links, itself included, that holds workbook sources: the topics
+# (rigid_*) and a chapter's own code shared by its scenes (chNN_*, e.g. Chapter 7's ch07_bench).
 function(_workbook_live_sources target out)
   set(seen "")
   set(stack ${target})
@@ -38,10 +39,11 @@ function(_workbook_live_sources target out)
       continue()
     endif()
     get_target_property(type ${t} TYPE)
-    if(NOT type STREQUAL "INTERFACE_LIBRARY" AND t MATCHES "^rigid_")
+    if(NOT type STREQUAL "INTERFACE_LIBRARY" AND t MATCHES "^(rigid_|ch[0-9][0-9]_)")
       get_target_property(srcs ${t} SOURCES)
+      get_target_property(dir ${t} SOURCE_DIR)  # where its relative sources are
       foreach(s IN LISTS srcs)
-        get_filename_component(s "${s}" ABSOLUTE BASE_DIR "${WORKBOOK_ROOT}")
+        get_filename_component(s "${s}" ABSOLUTE BASE_DIR "${dir}")
         list(APPEND sources "${s}")
       endforeach()
     endif()
