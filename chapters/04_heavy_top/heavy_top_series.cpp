@@ -4,6 +4,7 @@
 // E(t) and T(t) are evaluated directly (rigid::euler_vector, rigid::torque) at N instants of
 // one common period and decomposed numerically on the eleven functions of the series (least
 // squares; with alpha = 3, beta = 5 every frequency 0, 2, 3, 5, 6, 8 is resolved on [0, 2 pi)).
+// --beta takes another whole beta, unless two frequencies of the series then coincide.
 // Each coefficient vector is compared with [P]'s printed one and with the corrected one of
 // rigid::euler_vector_series / rigid::torque_series.
 #include <algorithm>
@@ -82,6 +83,7 @@ std::vector<Vec3> fourier_fit(F v, double alpha, double beta, int N) {
 // end snippet
 
 struct Params {
+    int beta = 5;  // alpha = 3: beta / alpha = 5/3
     double b3 = 0.37;
     double k_angle = 0.8;
     Vec3 z0 = Vec3(0.3, -0.5, 0.8);
@@ -94,14 +96,29 @@ void declare(kit::Options& opts, Params& p) {
         .real("k-angle", &p.k_angle, "direction of k = (0, cos, sin) in the plane of a and b (radians)",
               kit::between(-10, 10))
         .vector("z0", &p.z0, "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector(-1e3, 1e3))
-        .integer("samples", &p.samples,
-                 "samples N over the period 2 pi (at least 2 * 8 + 1 = 17 resolve every frequency)", 32, 4096);
+        .integer(
+            "samples", &p.samples,
+            "samples N over the period 2 pi (at least 2 (alpha + beta) + 1 resolve every frequency: 17 at beta = 5)",
+            32, 4096)
+        .integer("beta", &p.beta,
+                 "the precession's frequency beta, a whole number (alpha = 3): beta / alpha = beta / 3", 1, 12);
+}
+
+// The eleven functions are independent only if the frequencies alpha, 2 alpha, beta,
+// alpha + beta, |alpha - beta| differ (and none is 0): beta = alpha, 2 alpha, 3 alpha make two
+// of them one, Lemma 1's Case 3, Case 2 and the ratio 3 (|gamma_-| = 2 alpha).
+void check(const Params& p) {
+    if (p.beta == 3 || p.beta == 6 || p.beta == 9)
+        throw kit::BadInput("--beta: got " + std::to_string(p.beta) +
+                            "; it must not be 3, 6 or 9 (alpha = 3): beta = alpha, 2 alpha or 3 alpha makes two "
+                            "frequencies of the series one (Lemma 1's Case 3, Case 2, |gamma_-| = 2 alpha), and the "
+                            "decomposition cannot tell their terms apart");
 }
 
 // The trial motion, and the 11 coefficient vectors of E and of T: numerical, from the series
 // corrected, and as printed.
 struct Series {
-    double alpha = 3, beta = 5;  // commensurate: one common period 2 pi
+    double alpha = 3, beta = 5;  // whole numbers: one common period 2 pi
     Vec3 b, k, z0;
     std::vector<Vec3> numE, numT, corE, corT, prE, prT;
     double run_time;
@@ -109,6 +126,7 @@ struct Series {
 
 Series compute(const Params& prm) {
     Series s;
+    s.beta = prm.beta;
     const double b3 = prm.b3, b2 = std::sqrt(1 - b3 * b3), phi = prm.k_angle;
     const double alpha = s.alpha, beta = s.beta;
     Mat3 J;  // a general symmetric J: the lab axes are not inertia axes
@@ -198,6 +216,7 @@ int main(int argc, char** argv) {
                       "Chapter 4: the series (3.5)-(3.6) for E and T against a numerical Fourier decomposition");
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options&, kit::Scene& scene) {
+        check(p);
         const Series s = compute(p);
         const auto table = compare(scene.report, s);
         report(scene, p, s, table);
