@@ -98,8 +98,9 @@ void declare(kit::Options& opts, Params& p) {
         .vector("z0", &p.z0, "centre-of-mass direction z(0) (normalised)", kit::nonzero_vector(-1e3, 1e3))
         .integer(
             "samples", &p.samples,
-            "samples N over the period 2 pi (at least 2 (alpha + beta) + 1 resolve every frequency: 17 at beta = 5)",
-            32, 4096)
+            "samples N over the period 2 pi (at least 11, one per function fitted; 2 (alpha + beta) + 1 resolve every "
+            "frequency: 17 at beta = 5, 31 at beta = 12)",
+            11, 4096)
         .integer("beta", &p.beta,
                  "the precession's frequency beta, a whole number (alpha = 3): beta / alpha = beta / 3", 1, 12);
 }
