@@ -25,11 +25,6 @@
     if (text !== undefined) e.textContent = text;
     return e;
   }
-  function svg(tag, attrs) {
-    const e = document.createElementNS(SVG, tag);
-    for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
-    return e;
-  }
 
   // A number as the book writes it: 3 significant digits, ×10ⁿ for the very small and large.
   function show(x) {
@@ -104,27 +99,41 @@
     return panel.blocks.map((rows) => rows.map(f));
   }
 
+  // Text for SVG markup.
+  function esc(text) {
+    return String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;").replace(/"/g, "&quot;");
+  }
+
+  // The panel as one SVG text, parsed once (innerHTML): a path per series, the frame, the title,
+  // the ranges at the corners of a 2D plot. One pass over the points for the ranges, one to
+  // write them.
   function draw(host, panel) {
-    const W = 520, H = 380, pad = 34;
+    const W = 520, H = 380, pad = 44;
     const series = project(panel);
-    const pts = [].concat(...series).filter((p) => p);
-    const box = svg("svg", { viewBox: `0 0 ${W} ${H}`, class: "live-plot", role: "img", "aria-label": panel.title });
-    if (!pts.length) {
-      host.replaceChildren(box);
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const rows of series)
+      for (const p of rows)
+        if (p) {
+          if (p[0] < x0) x0 = p[0];
+          if (p[0] > x1) x1 = p[0];
+          if (p[1] < y0) y0 = p[1];
+          if (p[1] > y1) y1 = p[1];
+        }
+    const head = `<svg xmlns="${SVG}" viewBox="0 0 ${W} ${H}" class="live-plot" role="img" aria-label="${esc(panel.title)}">`;
+    if (x0 > x1) {
+      host.innerHTML = head + "</svg>";
       return;
     }
-    let x0 = Math.min(...pts.map((p) => p[0])), x1 = Math.max(...pts.map((p) => p[0]));
-    let y0 = Math.min(...pts.map((p) => p[1])), y1 = Math.max(...pts.map((p) => p[1]));
     if (panel.kind === "splot") {
       const half = Math.max(x1 - x0, y1 - y0) / 2 || 1, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
       [x0, x1, y0, y1] = [cx - half, cx + half, cy - half, cy + half];
     }
     const sx = (W - 2 * pad) / (x1 - x0 || 1), sy = (H - 2 * pad) / (y1 - y0 || 1);
     const s = panel.kind === "splot" ? Math.min(sx, sy) : null;
-    const X = (p) => pad + (p[0] - x0) * (s || sx) + (s ? (W - 2 * pad - (x1 - x0) * s) / 2 : 0);
-    const Y = (p) => H - pad - (p[1] - y0) * (s || sy) - (s ? (H - 2 * pad - (y1 - y0) * s) / 2 : 0);
-    box.appendChild(svg("rect", { x: 0, y: 0, width: W, height: H, fill: "#fff" }));
-    if (panel.kind === "plot") box.appendChild(svg("rect", { x: pad, y: pad, width: W - 2 * pad, height: H - 2 * pad, fill: "none", stroke: "#888" }));
+    const ox = pad + (s ? (W - 2 * pad - (x1 - x0) * s) / 2 : 0), oy = H - pad - (s ? (H - 2 * pad - (y1 - y0) * s) / 2 : 0);
+    const kx = s || sx, ky = s || sy;
+    const out = [head, `<rect x="0" y="0" width="${W}" height="${H}" fill="#fff"/>`];
+    if (panel.kind === "plot") out.push(`<rect x="${pad}" y="${pad}" width="${W - 2 * pad}" height="${H - 2 * pad}" fill="none" stroke="#888"/>`);
     series.forEach((rows, i) => {
       let d = "", pen = false;
       for (const p of rows) {
@@ -132,27 +141,22 @@
           pen = false;
           continue;
         }
-        d += (pen ? "L" : "M") + X(p).toFixed(1) + " " + Y(p).toFixed(1);
+        d += (pen ? "L" : "M") + (ox + (p[0] - x0) * kx).toFixed(1) + " " + (oy - (p[1] - y0) * ky).toFixed(1);
         pen = true;
       }
-      box.appendChild(svg("path", { d, fill: "none", stroke: COLOURS[i % COLOURS.length], "stroke-width": 1.4, class: "live-series" }));
+      out.push(`<path d="${d}" fill="none" stroke="${COLOURS[i % COLOURS.length]}" stroke-width="1.4" class="live-series"/>`);
     });
-    const t = svg("text", { x: W / 2, y: 18, "text-anchor": "middle", class: "live-plot-title" });
-    t.textContent = panel.title;
-    box.appendChild(t);
+    out.push(`<text x="${W / 2}" y="18" text-anchor="middle" class="live-plot-title">${esc(panel.title)}</text>`);
     if (panel.kind === "plot") {
-      const lab = (x, y, text, anchor) => {
-        const e = svg("text", { x, y, "text-anchor": anchor, class: "live-plot-tick" });
-        e.textContent = text;
-        box.appendChild(e);
-      };
+      const lab = (x, y, text, anchor) => out.push(`<text x="${x}" y="${y}" text-anchor="${anchor}" class="live-plot-tick">${esc(text)}</text>`);
       const tx = (v, log) => show(log ? Math.pow(10, v) : v);
       lab(pad, H - pad + 14, tx(x0, panel.log.includes("x")), "start");
       lab(W - pad, H - pad + 14, tx(x1, panel.log.includes("x")), "end");
       lab(pad - 4, H - pad, tx(y0, panel.log.includes("y")), "end");
       lab(pad - 4, pad + 10, tx(y1, panel.log.includes("y")), "end");
     }
-    host.replaceChildren(box);
+    out.push("</svg>");
+    host.innerHTML = out.join("");
   }
 
   // ------------------------------------------------------------------------ a live scene
@@ -362,12 +366,17 @@
       const panel = all[Math.min(p.panel || 0, all.length - 1)];
       if (panel) draw(this.plot, panel);
     }
-    if (this.spec.motion && r.motion && window.motionViewerReplace) {
-      for (const f of document.querySelectorAll("figure.motion")) {
-        const d = JSON.parse(f.querySelector("script.motion-data").textContent);
-        if (d.scene === this.scene) window.motionViewerReplace(f, r.motion);
-      }
-    }
+    if (this.spec.motion && r.motion && window.motionViewerReplace)
+      for (const f of this.motionFigures()) window.motionViewerReplace(f, r.motion);
+  };
+
+  // The page's motion figures of this scene, found once: their data (parsed here only to read
+  // the scene's name) is large, and a run must not parse it again.
+  LiveScene.prototype.motionFigures = function () {
+    if (!this.figures)
+      this.figures = Array.from(document.querySelectorAll("figure.motion")).filter(
+        (f) => JSON.parse(f.querySelector("script.motion-data").textContent).scene === this.scene);
+    return this.figures;
   };
 
   LiveScene.prototype.set = function (option, value) {

@@ -108,8 +108,36 @@
     sun.position.set(3, -2, 5);
     scene.add(sun);
     this.scene = scene;
+    const camera = new THREE.PerspectiveCamera(35, width / height, 0.05, 100);
+    camera.up.set(0, 0, 1);
+    this.camera = camera;
+    this.load(d);
+    this.reset();
+    this.controls(stage);
+    this.legend(stage);
+    this.ready = true;
+  };
 
-    // Each body: its frame turned by R(t) about its fixed point, its trails and cones.
+  // Frees what three.js keeps on the GPU for the objects of a group.
+  function dispose(group) {
+    group.traverse((o) => {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) o.material.dispose();
+    });
+  }
+
+  // The motion's objects, in one group of the scene (the lights and the renderer stay): each
+  // body, its frame turned by R(t) about its fixed point, its trails and cones; and where the
+  // camera looks. Called again with new samples (update), it replaces the group.
+  Viewer.prototype.load = function (d) {
+    if (this.world) {
+      this.scene.remove(this.world);
+      dispose(this.world);
+    }
+    this.data = d;
+    this.t = d.t;
+    this.world = new THREE.Group();
+    this.scene.add(this.world);
     this.bodies = [d].concat(d.others || []).map((b) => this.addBody(b, d.k));
     this.trails = [].concat(...this.bodies.map((b) => b.trails));
     const reach = Math.max(...this.bodies.map((b) => b.reach));
@@ -117,20 +145,27 @@
     const O = points.reduce((a, p) => a.add(p), new THREE.Vector3()).multiplyScalar(1 / points.length);
     const spread = Math.max(...points.map((p) => p.distanceTo(O)));
     const span = Math.max(reach, 1.6);
-    const camera = new THREE.PerspectiveCamera(35, width / height, 0.05, 100);
-    camera.up.set(0, 0, 1);
-    this.camera = camera;
     this.target = O.clone().add(new THREE.Vector3(0, 0, 0.35 * span));
     this.distance = 3.6 * span + 0.8 * spread;
-    this.reset();
-    this.controls(stage);
+  };
+
+  // New samples (a live scene ran again, live.js): the same renderer, stage, controls and view
+  // (its turn by the reader kept); the motion's objects and the legend are built again, the
+  // time starts over and the viewer stays paused if it was. Far cheaper than a new viewer: no
+  // new WebGL context.
+  Viewer.prototype.update = function (data) {
+    this.load(data);
+    this.base = data.speed > 0 ? data.speed : 1;
+    this.place();
+    const stage = this.legendList.parentNode;
+    this.legendList.remove();
     this.legend(stage);
-    this.ready = true;
+    this.seek(this.t[0]);
   };
 
   // One body of the motion: returns {data, frame, q, trails, reach}.
   Viewer.prototype.addBody = function (b, k) {
-    const scene = this.scene;
+    const scene = this.world;
     const O = vec(b.fixed_point);
     const frame = new THREE.Group();
     frame.position.copy(O);
@@ -200,7 +235,6 @@
       if (s === 1) o.selected = true;
       speed.appendChild(o);
     }
-    const t0 = this.t[0], t1 = this.t[this.t.length - 1];
     const scrub = el("input", { type: "range", class: "motion-time", min: "0", max: "1000", value: "0", "aria-label": "time" });
     const clock = el("output", { class: "motion-clock" }, "t = 0");
     const reset = el("button", { type: "button", class: "motion-reset" }, "Reset");
@@ -209,16 +243,17 @@
     this.ui = { play, speed, scrub, clock };
     play.addEventListener("click", () => (this.playing ? this.pause() : this.play()));
     speed.addEventListener("change", () => (this.speed = parseFloat(speed.value)));
+    // The samples' first and last times, read at each use: update() may bring new ones.
     scrub.addEventListener("input", () => {
+      const t = this.t, t0 = t[0], t1 = t[t.length - 1];
       this.pause();
       this.seek(t0 + (t1 - t0) * scrub.value / 1000);
     });
     reset.addEventListener("click", () => {
       this.reset();
-      this.seek(t0);
+      this.seek(this.t[0]);
       this.play();
-      this.base = data.speed > 0 ? data.speed : 1;  // t per second at 1x, as the scene chose
-    this.speed = 1;
+      this.speed = 1;
       speed.value = "1";
     });
     // Drag to turn the view about the fixed point.
@@ -262,6 +297,7 @@
       list.appendChild(li);
     }
     stage.appendChild(list);
+    this.legendList = list;
   };
 
   Viewer.prototype.play = function () {
@@ -324,19 +360,12 @@
       }
     }
     // A live scene (live.js) hands the viewer the motion its module just computed: the viewer of
-    // that figure is built again on the new samples, in the same place of the lists.
+    // that figure shows the new samples (update: same renderer and view, new objects).
     window.motionViewerReplace = function (fig, data) {
-      const i = viewers.findIndex((v) => v.figure === fig);
-      if (i < 0) return null;
-      const old = viewers[i], stage = fig.querySelector(".motion-stage");
-      if (stage) stage.remove();
-      if (old.renderer) old.renderer.dispose();
-      const v = new Viewer(fig, data);
-      v.seek(v.t[0]);
-      if (!old.playing) v.pause();
-      v.replaced = (old.replaced || 0) + 1;
-      viewers[i] = v;
-      window.motionViewers[window.motionViewers.indexOf(old)] = v;
+      const v = viewers.find((w) => w.figure === fig);
+      if (!v) return null;
+      v.update(data);
+      v.replaced = (v.replaced || 0) + 1;
       return v;
     };
     let last = null;
