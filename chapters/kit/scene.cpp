@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -125,11 +126,17 @@ VecRule nonzero_vector(double lo, double hi) {
 
 Options::Options(std::string scene, std::string summary) : scene_(std::move(scene)), summary_(std::move(summary)) {}
 
-Options::Spec& Options::add(const std::string& name) {
+Options::Spec& Options::add(const std::string& name, std::string kind, const std::string& help, std::string rule_text,
+                            std::string shown_default) {
     if (find(name)) throw std::logic_error("option --" + name + " declared twice");
     specs_.push_back({});
-    specs_.back().name = name;
-    return specs_.back();
+    Spec& s = specs_.back();
+    s.name = name;
+    s.kind = std::move(kind);
+    s.help = help;
+    s.rule_text = std::move(rule_text);
+    s.shown_default = std::move(shown_default);
+    return s;
 }
 
 const Options::Spec* Options::find(const std::string& name) const {
@@ -138,131 +145,85 @@ const Options::Spec* Options::find(const std::string& name) const {
     return nullptr;
 }
 
-Options& Options::real(const std::string& name, double fallback, const std::string& help, Rule rule) {
-    Spec& s = add(name);
-    s.kind = "number";
-    s.help = help;
-    s.rule_text = rule.text;
-    s.shown_default = short_number(fallback);
-    reals_[name] = fallback;
+Options& Options::real(const std::string& name, double* field, const std::string& help, Rule rule) {
+    if (!rule.holds(*field)) throw std::logic_error("option --" + name + ": its default is outside its range");
+    Spec& s = add(name, "number", help, rule.text, short_number(*field));
     s.lo = rule.lo;
     s.hi = rule.hi;
-    if (!rule.holds(fallback)) throw std::logic_error("option --" + name + ": its default is outside its range");
-    s.set = [this, name, rule](const std::string& word) {
+    s.set = [name, field, rule](const std::string& word) {
         const double x = parse_real(name, word);
         if (!rule.holds(x)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
-        reals_[name] = x;
+        *field = x;
     };
     return *this;
 }
 
-Options& Options::integer(const std::string& name, long fallback, const std::string& help, long min, long max) {
-    Spec& s = add(name);
-    s.kind = "integer";
-    s.help = help;
-    s.rule_text = "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-    s.shown_default = std::to_string(fallback);
-    s.lo = static_cast<double>(min);
-    s.hi = static_cast<double>(max);
+Options& Options::whole(const std::string& name, long fallback, const std::string& help, long min, long max,
+                        std::function<void(long)> store) {
     if (fallback < min || fallback > max)
         throw std::logic_error("option --" + name + ": its default is outside its range");
-    integers_[name] = fallback;
-    s.set = [this, name, min, max, rule_text = s.rule_text](const std::string& word) {
+    const std::string rule = "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    Spec& s = add(name, "integer", help, rule, std::to_string(fallback));
+    s.lo = static_cast<double>(min);
+    s.hi = static_cast<double>(max);
+    // Base 10 only: CLI11's own conversion would read 010 as octal.
+    s.set = [name, min, max, rule, store = std::move(store)](const std::string& word) {
         char* end = nullptr;
         errno = 0;
         const long x = word.empty() ? 0 : std::strtol(word.c_str(), &end, 10);
         if (word.empty() || *end != '\0' || errno == ERANGE || x < min || x > max)
-            throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule_text);
-        integers_[name] = x;
+            throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule);
+        store(x);
     };
     return *this;
 }
 
-Options& Options::vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help, VecRule rule) {
-    Spec& s = add(name);
-    s.kind = "x,y,z";
-    s.help = help;
-    s.rule_text = rule.text;
-    s.shown_default = short_number(fallback.x()) + "," + short_number(fallback.y()) + "," + short_number(fallback.z());
+Options& Options::integer(const std::string& name, long* field, const std::string& help, long min, long max) {
+    return whole(name, *field, help, min, max, [field](long x) { *field = x; });
+}
+
+Options& Options::integer(const std::string& name, int* field, const std::string& help, int min, int max) {
+    return whole(name, *field, help, min, max, [field](long x) { *field = static_cast<int>(x); });
+}
+
+Options& Options::vector(const std::string& name, rigid::Vec3* field, const std::string& help, VecRule rule) {
+    const rigid::Vec3& v = *field;
+    if (!rule.holds(v)) throw std::logic_error("option --" + name + ": its default is outside its range");
+    Spec& s = add(name, "x,y,z", help, rule.text,
+                  short_number(v.x()) + "," + short_number(v.y()) + "," + short_number(v.z()));
     s.lo = rule.lo;
     s.hi = rule.hi;
-    if (!rule.holds(fallback)) throw std::logic_error("option --" + name + ": its default is outside its range");
-    vectors_[name] = fallback;
-    s.set = [this, name, rule](const std::string& word) {
-        rigid::Vec3 v;
+    s.set = [name, field, rule](const std::string& word) {
+        rigid::Vec3 x;
         std::stringstream in(word);
         std::string part;
         int n = 0;
         while (std::getline(in, part, ',')) {
             if (n == 3) throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule.text);
-            v(n++) = parse_real(name, part);
+            x(n++) = parse_real(name, part);
         }
         if (n != 3) throw BadInput("--" + name + ": got '" + word + "'; it must be " + rule.text);
-        if (!rule.holds(v)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
-        vectors_[name] = v;
+        if (!rule.holds(x)) throw BadInput("--" + name + ": got " + word + "; it must be " + rule.text);
+        *field = x;
     };
-    return *this;
-}
-
-Options& Options::choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& choices,
-                         const std::string& help) {
-    Spec& s = add(name);
-    s.kind = "word";
-    s.help = help;
-    s.choices = choices;
-    std::string list;
-    for (const auto& c : choices) list += (list.empty() ? "" : "|") + c;
-    s.rule_text = "one of " + list;
-    s.shown_default = fallback;
-    choices_[name] = fallback;
-    s.set = [this, name, choices, list](const std::string& word) {
-        for (const auto& c : choices)
-            if (c == word) {
-                choices_[name] = word;
-                return;
-            }
-        throw BadInput("--" + name + ": got '" + word + "'; it must be one of " + list);
-    };
-    return *this;
-}
-
-Options& Options::real(const std::string& name, double* field, const std::string& help, Rule rule) {
-    real(name, *field, help, std::move(rule));
-    specs_.back().bind = [this, name, field] { *field = reals_.at(name); };
-    return *this;
-}
-
-Options& Options::integer(const std::string& name, long* field, const std::string& help, long min, long max) {
-    integer(name, *field, help, min, max);
-    specs_.back().bind = [this, name, field] { *field = integers_.at(name); };
-    return *this;
-}
-
-Options& Options::integer(const std::string& name, int* field, const std::string& help, int min, int max) {
-    integer(name, static_cast<long>(*field), help, min, max);
-    specs_.back().bind = [this, name, field] { *field = static_cast<int>(integers_.at(name)); };
-    return *this;
-}
-
-Options& Options::vector(const std::string& name, rigid::Vec3* field, const std::string& help, VecRule rule) {
-    vector(name, *field, help, std::move(rule));
-    specs_.back().bind = [this, name, field] { *field = vectors_.at(name); };
     return *this;
 }
 
 Options& Options::choice(const std::string& name, std::string* field, const std::vector<std::string>& choices,
                          const std::string& help) {
-    choice(name, *field, choices, help);
-    specs_.back().bind = [this, name, field] { *field = choices_.at(name); };
+    const std::string list = fmt::format("{}", fmt::join(choices, "|"));
+    Spec& s = add(name, "word", help, "one of " + list, *field);
+    s.choices = choices;
+    s.set = [name, field, choices, list](const std::string& word) {
+        if (std::find(choices.begin(), choices.end(), word) == choices.end())
+            throw BadInput("--" + name + ": got '" + word + "'; it must be one of " + list);
+        *field = word;
+    };
     return *this;
 }
 
 Options& Options::file(const std::string& name, std::string* field, const std::string& help) {
-    Spec& s = add(name);
-    s.kind = "file";
-    s.help = help;
-    s.rule_text = "a file name";
-    s.shown_default = "none";
+    Spec& s = add(name, "file", help, "a file name", "none");
     s.set = [field, name](const std::string& value) {
         if (value.empty()) throw BadInput("--" + name + ": needs a file name");
         *field = value;
@@ -277,60 +238,87 @@ std::string Options::option_names() const {
     return fmt::format("{}", fmt::join(names, ", "));
 }
 
+namespace {
+
+// Thrown by --help and --list-options once they have printed: the scene stops there (exit 0).
+struct Stop {};
+
+// An option with a value: CLI11 finds it (--name VALUE, --name=VALUE) and `set` parses, checks
+// and keeps the value, at once, so that the first bad word on the line is the one refused.
+// A value may itself start with '-' (a negative number), but never with "--": that is the
+// next option, and this one has no value.
+void take_value(CLI::App& app, const std::string& name, const std::string& missing,
+                const std::function<void(const std::string&)>& set) {
+    app.add_option_function<std::string>("--" + name,
+                                         [missing, set](const std::string& word) {
+                                             if (word.rfind("--", 0) == 0) throw BadInput(missing);
+                                             set(word);
+                                         })
+        ->trigger_on_parse();
+}
+
+// A flag (no value), acted on where it stands on the line.
+void take_flag(CLI::App& app, const std::string& names, const std::function<void()>& act) {
+    app.add_flag_callback(names, act)->trigger_on_parse();
+}
+
+}  // namespace
+
+void Options::declare_kit_options(CLI::App& app) {
+    take_value(app, "out", needs_value("out"), [this](const std::string& dir) {
+        if (dir.empty()) throw BadInput("--out: needs a folder name");
+        out_dir_ = dir;
+    });
+    take_value(app, "budget", needs_value("budget"), [this](const std::string& word) {
+        const double b = parse_real("budget", word);
+        if (!(b >= 1 && b <= 86400))
+            throw BadInput("--budget: got " + word + "; it must be a number of seconds in [1, 86400]");
+        budget_s_ = b;
+    });
+    take_flag(app, "--json", [this] { json_ = true; });
+    take_flag(app, "--no-figure", [this] { figures_ = false; });
+    take_flag(app, "--list-options", [this] {
+        print_option_list(std::cout);
+        throw Stop{};
+    });
+    // -h too, unless a scene option is --h (a step), which CLI11 would take -h for.
+    take_flag(app, find("h") ? "--help" : "-h,--help", [this] {
+        print_help(std::cout);
+        throw Stop{};
+    });
+}
+
 bool Options::parse(int argc, char** argv) {
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "--help" || arg == "-h") {
-            print_help(std::cout);
-            return false;
-        }
-        if (arg == "--json") {
-            json_ = true;
-            continue;
-        }
-        if (arg == "--no-figure") {
-            figures_ = false;
-            continue;
-        }
-        if (arg == "--list-options") {
-            print_option_list(std::cout);
-            return false;
-        }
-        if (arg.rfind("--", 0) != 0)
-            throw BadInput("unexpected argument '" + arg + "' (options start with --; see --help)");
-        std::string name = arg.substr(2), value;
-        bool has_value = false;
-        if (const auto eq = name.find('='); eq != std::string::npos) {
-            value = name.substr(eq + 1);
-            name = name.substr(0, eq);
-            has_value = true;
-        }
-        const Spec* spec = find(name);
-        if (name != "out" && name != "budget" && !spec) throw BadInput(unknown_option(name));
-        if (!has_value) {
-            // A value may itself start with '-' (a negative number), but never with "--".
-            if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
-                throw BadInput("--" + name + ": needs a value" +
-                               (spec            ? " (" + spec->rule_text + ")"
-                                : name == "out" ? " (a folder)"
-                                                : " (seconds)"));
-            value = argv[++i];
-        }
-        if (name == "out") {
-            if (value.empty()) throw BadInput("--out: needs a folder name");
-            out_dir_ = value;
-        } else if (name == "budget") {
-            const double b = parse_real(name, value);
-            if (!(b >= 1 && b <= 86400))
-                throw BadInput("--budget: got " + value + "; it must be a number of seconds in [1, 86400]");
-            budget_s_ = b;
-        } else {
-            spec->set(value);
-        }
+    CLI::App app{summary_, scene_};
+    app.set_help_flag();  // the kit's own --help (above), with each option's rule and default
+    app.allow_extras();   // kept to be refused below, naming the options the scene has
+    for (const Spec& s : specs_) take_value(app, s.name, needs_value(s.name), s.set);
+    declare_kit_options(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const Stop&) {
+        return false;
+    } catch (const CLI::ArgumentMismatch& e) {
+        // The line ran out before a value: its last word is the option that wanted one.
+        const std::string last = argv[argc - 1];
+        if (last.rfind("--", 0) != 0) throw BadInput(e.what());
+        throw BadInput(needs_value(last.substr(2, last.find('=') - 2)));
+    } catch (const CLI::ParseError& e) {
+        throw BadInput(e.what());
     }
-    for (const auto& s : specs_)
-        if (s.bind) s.bind();
+    if (const auto extra = app.remaining(); !extra.empty()) throw BadInput(unexpected(extra.front()));
     return true;
+}
+
+std::string Options::needs_value(const std::string& name) const {
+    const Spec* s = find(name);
+    return "--" + name + ": needs a value (" + (s ? s->rule_text : name == "out" ? "a folder" : "seconds") + ")";
+}
+
+std::string Options::unexpected(const std::string& word) const {
+    if (word.rfind("--", 0) != 0) return "unexpected argument '" + word + "' (options start with --; see --help)";
+    const std::string name = word.substr(2);
+    return unknown_option(name.substr(0, name.find('=')));
 }
 
 std::string Options::unknown_option(const std::string& name) const {

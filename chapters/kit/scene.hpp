@@ -44,6 +44,10 @@
 
 #include "rigid/types.hpp"
 
+namespace CLI {
+class App;  // CLI11 (<CLI/CLI.hpp>), which reads the command line: scene.cpp alone includes it
+}
+
 namespace kit {
 
 // Bad input: exit status 2, the message names the option and the rule it breaks.
@@ -91,7 +95,9 @@ public:
     // A file name (kind "file"; empty by default), e.g. --motion FILE (motion.hpp).
     Options& file(const std::string& name, std::string* field, const std::string& help);
 
-    // Reads argv; throws BadInput naming the option and the rule. Returns false after --help.
+    // Reads argv with CLI11 (--name VALUE or --name=VALUE, in order; the last of a repeated
+    // option wins); throws BadInput naming the option and the rule. Returns false after --help
+    // or --list-options.
     bool parse(int argc, char** argv);
 
     const std::string& scene() const { return scene_; }
@@ -106,31 +112,27 @@ public:
     std::string option_names() const;
 
 private:
-    // The declarations behind the typed ones: the value is kept by name until bound.
-    Options& real(const std::string& name, double fallback, const std::string& help, Rule rule);
-    Options& integer(const std::string& name, long fallback, const std::string& help, long min, long max);
-    Options& vector(const std::string& name, const rigid::Vec3& fallback, const std::string& help, VecRule rule);
-    Options& choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& choices,
-                    const std::string& help);
+    // An integer option of either width: `store` writes the checked value into the field.
+    Options& whole(const std::string& name, long fallback, const std::string& help, long min, long max,
+                   std::function<void(long)> store);
 
     struct Spec {
         std::string name, help, kind, rule_text;
         std::vector<std::string> choices;
-        std::function<void(const std::string&)> set;  // parses and checks one value
-        std::function<void()> bind;                   // writes the value into a bound field
+        std::function<void(const std::string&)> set;  // parses and checks one value, writes its field
         std::string shown_default;
         double lo = 0, hi = 0;  // the accepted range (numbers, integers, vectors)
     };
-    Spec& add(const std::string& name);
+    Spec& add(const std::string& name, std::string kind, const std::string& help, std::string rule_text,
+              std::string shown_default);
+    void declare_kit_options(CLI::App& app);
+    std::string needs_value(const std::string& name) const;
+    std::string unexpected(const std::string& word) const;
     std::string unknown_option(const std::string& name) const;
     const Spec* find(const std::string& name) const;
 
     std::string scene_, summary_;
     std::vector<Spec> specs_;
-    std::map<std::string, double> reals_;
-    std::map<std::string, long> integers_;
-    std::map<std::string, rigid::Vec3> vectors_;
-    std::map<std::string, std::string> choices_;
     std::string out_dir_ = ".";
     bool figures_ = true, json_ = false;
     double budget_s_ = default_budget_s;
