@@ -4,7 +4,11 @@
 #
 #   workbook_live_scene(<scene>)
 #
-# The scene must not need GSL (Debian builds none for WebAssembly).
+# A scene that links GSL gets it too: Debian builds no GSL for WebAssembly, so the build makes one
+# from Debian's own source package, once, in <build>/live-gsl/ (cmake/live/gsl.cmake, the target
+# live_gsl: apt-get source, dpkg-source, emconfigure and emmake), unless WORKBOOK_LIVE_GSL names
+# one already built. Where that cannot be done (offline, no apt-get), the live scenes that need
+# GSL are left out with one message, each of their pages says why, and the others stay live.
 #
 # The module is built from the scene's source and the sources of every library it links (its
 # topics from WORKBOOK_IMPL, the provided code), never from a second copy. Its page spec,
@@ -19,16 +23,21 @@ set(WORKBOOK_EMSCRIPTEN_TOOLCHAIN "/usr/share/emscripten/cmake/Modules/Platform/
     CACHE FILEPATH "emscripten's CMake toolchain file (Debian: emscripten)")
 find_program(WORKBOOK_EMXX em++)
 set(WORKBOOK_LIVE_GSL "" CACHE PATH
-    "prefix of a GSL built with emscripten (include/gsl, lib/libgsl.a, lib/libgslcblas.a) for live scenes that need GSL")
+    "prefix of a GSL built with emscripten (include/gsl, lib/libgsl.a, lib/libgslcblas.a) for live scenes that need GSL; empty: the build makes one from Debian's source package in <build>/live-gsl")
 
 # Every library a target links, itself included, that holds workbook sources: the topics
-# (rigid_*) and a chapter's own code shared by its scenes (chNN_*, e.g. Chapter 7's ch07_bench).
-function(_workbook_live_sources target out)
+# (rigid_*) and a chapter's own code shared by its scenes (chNN_*, e.g. Chapter 7's ch07_bench);
+# in `gsl`, whether GSL is among what it links.
+function(_workbook_live_sources target out gsl)
+  set(needs_gsl "")
   set(seen "")
   set(stack ${target})
   set(sources "")
   while(stack)
     list(POP_FRONT stack t)
+    if(t MATCHES "^GSL::")
+      set(needs_gsl gsl)
+    endif()
     if(NOT TARGET ${t} OR t IN_LIST seen)
       continue()
     endif()
@@ -53,6 +62,7 @@ function(_workbook_live_sources target out)
     endif()
   endwhile()
   set(${out} "${sources}" PARENT_SCOPE)
+  set(${gsl} "${needs_gsl}" PARENT_SCOPE)
 endfunction()
 
 function(workbook_live_scene name)
@@ -60,11 +70,32 @@ function(workbook_live_scene name)
   if(NOT EXISTS "${spec}")
     message(FATAL_ERROR "workbook_live_scene(${name}): its page spec ${spec} is missing")
   endif()
-  _workbook_live_sources(${name} sources)
+  _workbook_live_sources(${name} sources gsl)
   string(REPLACE ";" "," sources "${sources}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_LIVE_LIST
-               "${name}|${CMAKE_CURRENT_SOURCE_DIR}/${name}.cpp|${sources}")
+               "${name}|${CMAKE_CURRENT_SOURCE_DIR}/${name}.cpp|${sources}|${gsl}")
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_LIVE_SCENES ${name})
+endfunction()
+
+# The GSL the live scenes link: WORKBOOK_LIVE_GSL when the user names one (the target live_gsl
+# then does nothing), else Debian's, built once in <build>/live-gsl/ by cmake/live/gsl.cmake (quick
+# once it is there; it never fails the build, and says why when it cannot build). Its prefix and
+# status file (empty for the user's own) go to the live project.
+function(_workbook_live_gsl prefix status)
+  if(WORKBOOK_LIVE_GSL)
+    add_custom_target(live_gsl)
+    set(${prefix} "${WORKBOOK_LIVE_GSL}" PARENT_SCOPE)
+    set(${status} "" PARENT_SCOPE)
+    return()
+  endif()
+  set(dir "${CMAKE_BINARY_DIR}/live-gsl")
+  cmake_host_system_information(RESULT cores QUERY NUMBER_OF_LOGICAL_CORES)
+  add_custom_target(live_gsl
+    COMMAND ${CMAKE_COMMAND} -DDIR=${dir} -DJOBS=${cores} -P "${WORKBOOK_ROOT}/cmake/live/gsl.cmake"
+    COMMENT "GSL for the live scenes: Debian's source package built with emscripten (once)"
+    USES_TERMINAL)
+  set(${prefix} "${dir}/prefix" PARENT_SCOPE)
+  set(${status} "${dir}/status.txt" PARENT_SCOPE)
 endfunction()
 
 # After every scene: the target `live` (the modules and their page specs, in <build>/live/),
@@ -84,13 +115,15 @@ function(workbook_live)
   endif()
   string(REPLACE ";" "\n" text "${lines}")
   file(GENERATE OUTPUT "${out}/scenes.txt" CONTENT "${text}\n")
+  _workbook_live_gsl(gsl_prefix gsl_status)
   include(ExternalProject)
   ExternalProject_Add(live_modules
+    DEPENDS live_gsl
     SOURCE_DIR "${WORKBOOK_ROOT}/cmake/live"
     BINARY_DIR "${CMAKE_BINARY_DIR}/live-build"
     CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${WORKBOOK_EMSCRIPTEN_TOOLCHAIN} -DCMAKE_BUILD_TYPE=Release
                -DWORKBOOK_ROOT=${WORKBOOK_ROOT} -DLIVE_LIST=${out}/scenes.txt -DLIVE_OUT=${out}
-               -DWORKBOOK_LIVE_GSL=${WORKBOOK_LIVE_GSL}
+               -DWORKBOOK_LIVE_GSL=${gsl_prefix} -DWORKBOOK_LIVE_GSL_STATUS=${gsl_status}
     # emscripten's JavaScript optimizer needs acorn: Debian's node finds it, another node is told
     # where Debian keeps it.
     BUILD_COMMAND ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs ${CMAKE_COMMAND} --build <BINARY_DIR>
@@ -111,6 +144,20 @@ function(workbook_live)
   add_dependencies(workbook live)
   add_dependencies(book live)
   _workbook_live_tests()
+  _workbook_live_gsl_tests("${gsl_prefix}")
+endfunction()
+
+# The live scenes' GSL computes what Debian's native GSL computes (cmake/live/gsl_check.cmake:
+# an elliptic function and a rk8pd integration, to a relative 1e-13), and that check fails on a
+# result moved by 1e-9. Skipped without that GSL (the build said why), unless CI=true.
+function(_workbook_live_gsl_tests prefix)
+  set(check "live: the GSL built for the live scenes computes what Debian's native GSL computes")
+  set(self "live: the GSL check fails on a GSL result moved by 1e-9")
+  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} -DPREFIX=${prefix} -DWORK=${CMAKE_BINARY_DIR}/test/live-gsl
+                                   -DTOL=1e-13 -P "${WORKBOOK_ROOT}/cmake/live/gsl_check.cmake")
+  add_test(NAME "${self}" COMMAND ${CMAKE_COMMAND} -DPREFIX=${prefix} -DWORK=${CMAKE_BINARY_DIR}/test/live-gsl-plant
+                                  -DTOL=1e-13 -DPLANT=ON -P "${WORKBOOK_ROOT}/cmake/live/gsl_check.cmake")
+  set_tests_properties("${check}" "${self}" PROPERTIES LABELS "live" SKIP_REGULAR_EXPRESSION "SKIPPED: no GSL")
 endfunction()
 
 # The browser test of the live scenes, on the test suite's book (rendered by the test "book:

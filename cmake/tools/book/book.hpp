@@ -38,6 +38,8 @@ struct LiveBlock {
     bool live;
 };
 LiveBlock live_block(const fs::path& live_dir, const fs::path& out, const std::string& scene, const std::string& root);
+// Why a live scene has no module, in a few words: "no emscripten" or its SCENE.missing.txt.
+std::string live_missing_reason(const fs::path& live_dir, const std::string& scene);
 
 // --render: the book as HTML pages in options.out.
 int render(const RenderOptions& options);

@@ -477,11 +477,13 @@ void Book::raw_block(const md::Json& list, std::size_t& i, md::Json& out, PageWo
 }
 
 // A live scene (live.cpp): its modules and spec from the build's live/ folder; without them (no
-// emscripten) the block says so.
+// emscripten, or no GSL for a scene that needs it) the block says so.
 md::Json Book::live_scene(const std::string& scene, PageWork& w, int at) {
     const LiveBlock b = live_block(live_, out_, scene, up_to_root(w.page.file));
     page_live_ += b.live ? 1 : 0, lives_ += b.live ? 1 : 0;
-    if (!b.live) notes_.push_back(w.where(at) + ": the live scene " + scene + " is not built (no emscripten)");
+    if (!b.live)
+        notes_.push_back(w.where(at) + ": the live scene " + scene + " is not built (" +
+                         live_missing_reason(live_, scene) + ")");
     return raw_html_node("RawBlock", b.html);
 }
 
