@@ -9,6 +9,8 @@
 // drifts like t and its phase error grows like t^2 (1e-3 rad after 1e5 periods), and auto picks
 // the provided Taylor method of degree 16 with compensated summation (Chapter 7), whose round-off
 // does not correlate: its phase error grows like t^(3/2) (Brouwer's law).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,6 +18,7 @@
 #include <string>
 
 #include "heavy_body.hpp"
+#include "motion.hpp"
 #include "rigid/grioli.hpp"
 #include "rigid/heavy_top.hpp"
 #include "rigid/ode.hpp"
@@ -35,6 +38,7 @@ struct Params {
     int samples = 16;
     std::string method = "auto";
     double tol = 1e-12;
+    std::string motion_file;  // --motion: the book's viewer data (motion.hpp)
 };
 
 // The methods of --method: GSL's, taylor, and auto.
@@ -69,7 +73,8 @@ void declare(kit::Options& opts, Params& p) {
                 "1000 periods, taylor beyond")
         .real("tol", &p.tol,
               "relative tolerance; the absolute one is tol * min(1, alpha), alpha being the unit of Omega",
-              kit::between(1e-15, 1e-2));
+              kit::between(1e-15, 1e-2))
+        .file("motion", &p.motion_file, kit::motion_help);
 }
 
 void check_budget(const kit::Options& o, const Params& p) {
@@ -177,6 +182,38 @@ void report(kit::Scene& scene, const Params& p, const Integration& r) {
          taylor ? double(c.stats.rhs_calls) : kit::rk8pd_steps(c.stats.rhs_calls)});
 }
 
+// The book's motion viewer: two periods of the precession in a lab whose vertical is k (Item II's
+// placement R0), R(t) = R^b(sigma alpha t) R^a(sigma alpha t) R0, the closed form the integration
+// was compared with, and its two cones: about b in the lab, about a in the body, touching along
+// omega = sigma alpha (a + b) at t = 0.
+void write_motion(kit::Scene& scene, const Params& p, const Integration& r) {
+    if (p.motion_file.empty()) return;
+    const rigid::LabPlacement lab = rigid::place_item_II(r.m, p.body.f, r.g.sense, Vec3::UnitZ(), Vec3::UnitX());
+    const double s = r.g.sense == rigid::Sense::ccw ? 1.0 : -1.0, T = 2 * std::numbers::pi / lab.alpha;
+    const Vec3 w0 = (lab.a + lab.b).normalized();
+    kit::Motion b;
+    b.title = fmt::format("the {} Grioli precession R(t) = R^b({}αt) R^a({}αt) R0, k up", p.sense, s > 0 ? "" : "−",
+                          s > 0 ? "" : "−");
+    b.parameters =
+        fmt::format("A = {:g}, B = {:g}, C = {:g}, f = {:g}; two periods 2π/α", r.m.A, r.m.B, r.m.C, p.body.f);
+    b.error = r.c.max_rotation_error;
+    b.error_measure = "max geodesic angle between the integrated R(t) and this closed form (rad)";
+    b.moments = {r.m.A, r.m.B, r.m.C};
+    b.size = 0.55;
+    b.centre_of_mass = r.g.z0;
+    b.speed = T / 8;
+    b.cones = {
+        {"space cone (about b, fixed in the lab)", lab.b, std::acos(std::clamp(lab.b.dot(w0), -1.0, 1.0)), false},
+        {"body cone (about a, carried by the body)", lab.R0.transpose() * lab.a,
+         std::acos(std::clamp(lab.a.dot(w0), -1.0, 1.0)), true}};
+    for (int i = 0; i <= 400; ++i) {
+        const double t = 2 * T * i / 400;
+        b.sample(t, rigid::rotation_about(lab.b, s * lab.alpha * t) * rigid::rotation_about(lab.a, s * lab.alpha * t) *
+                        lab.R0);
+    }
+    kit::write_motion(scene, p.motion_file, b);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -186,6 +223,8 @@ int main(int argc, char** argv) {
     declare(opts, p);
     return kit::run(argc, argv, opts, [&](const kit::Options& o, kit::Scene& scene) {
         check_budget(o, p);
-        report(scene, p, integrate(p));
+        const Integration r = integrate(p);
+        report(scene, p, r);
+        write_motion(scene, p, r);
     });
 }
