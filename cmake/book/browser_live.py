@@ -22,7 +22,8 @@ recompute-and-redraw time (the median of 20 runs in the page): measurements, not
                     build left out for want of GSL: <build>/live/<scene>.missing.txt)
     browser_live.py --selftest <book folder> <build folder> <scratch folder>
                     the checks must fail on a module that returns a wrong number, on a module that
-                    does not load, and on a page that fetches from the network
+                    does not load, and on a page that fetches from the network; and the tolerance
+                    rules (abs, rel, abs + rel) must pass and fail a few numbers as they should
 
 Exit status: 0 all well; 1 a check failed; 77 no Chromium, a book without live modules (no
 emscripten), or live scenes left out for want of GSL (offline: no Debian source package; the
@@ -268,8 +269,23 @@ WRONG = """
 """
 
 
+def tolerance_cases():
+    """The tolerance rules on numbers alone: each case passes or fails as it says (names of those that do not)."""
+    both = {"abs": 1e-12, "rel": 1e-6}
+    cases = [("abs + rel: within rel far above abs", both, 1 + 5e-7, 1.0, True),
+             ("abs + rel: beyond rel far above abs", both, 1 + 2e-6, 1.0, False),
+             ("abs + rel: within abs near 0", both, 5e-13, 0.0, True),
+             ("abs + rel: beyond abs near 0", both, 3e-12, 0.0, False),
+             ("abs alone ignores the size", {"abs": 1e-12}, 1 + 2e-12, 1.0, False),
+             ("rel alone", {"rel": 1e-9}, 1 + 5e-10, 1.0, True)]
+    return [name for name, spec, page, native, good in cases if (agree(spec, page, native) is None) != good]
+
+
 def selftest(exe, book, build, work):
     """A copy of the book, damaged three ways; each damage must fail the check."""
+    wrong = tolerance_cases()
+    if wrong:
+        return [], ["tolerance: " + w for w in wrong]
     if os.path.exists(work):
         shutil.rmtree(work)
     os.makedirs(work)
