@@ -72,12 +72,29 @@
       if (v) view = [Number(v[1]), Number(v[2])];
       const p = line.match(/^\s*(s?plot)\s/);
       if (p) {
-        const n = (line.match(/'-'/g) || []).length;
-        out.push({ kind: p[1], title, log, view, blocks: plot.blocks.slice(block, block + n) });
+        // Each '-' with what its clause plots: "using 1:3", "using ($1-0.2):2" (a column, or a
+        // column shifted or scaled by a number); without "using", gnuplot's 1:2 or 1:2:3.
+        const clauses = line.split(/'-'/).slice(1);
+        const cols = clauses.map((c) => {
+          const u = c.match(/^\s*using\s+([^\s,]+)/);
+          const d = p[1] === "splot" ? [1, 2, 3] : [1, 2];
+          return (u ? u[1].split(":") : d.map(String)).map(column);
+        });
+        const n = clauses.length;
+        out.push({ kind: p[1], title, log, view, cols, blocks: plot.blocks.slice(block, block + n) });
         block += n;
       }
     }
     return out;
+  }
+
+  // One part of a "using": N, or ($N op number) with op one of + - * /; a function of the row.
+  function column(part) {
+    const n = part.match(/^\d+$/) ? [part, null, null] : part.match(/^\(\$(\d+)\s*([-+*/])\s*([\d.eE+-]+)\)$/)?.slice(1);
+    if (!n) throw new Error(`live plot: cannot read the column "${part}" of a gnuplot "using"`);
+    const i = Number(n[0]) - 1, k = Number(n[2]);
+    const op = { "+": (v) => v + k, "-": (v) => v - k, "*": (v) => v * k, "/": (v) => v / k }[n[1]] || ((v) => v);
+    return (row) => (row[i] === undefined ? undefined : op(row[i]));
   }
 
   // Points of a panel on the screen: 2D as they are (log scales as asked), 3D turned by
@@ -85,8 +102,9 @@
   function project(panel) {
     const [rx, rz] = panel.view.map((d) => (d * Math.PI) / 180);
     const cz = Math.cos(rz), sz = Math.sin(rz), cx = Math.cos(rx), sx = Math.sin(rx);
-    const f = (r) => {
-      if (!r || r.length < 2) return null;
+    const f = (row, cols) => {
+      const r = row && cols.map((c) => c(row));
+      if (!r || r.length < 2 || r.some((v) => v === undefined)) return null;
       if (panel.kind === "plot") {
         let x = r[0], y = r[1];
         if (panel.log.includes("x")) x = x > 0 ? Math.log10(x) : NaN;
@@ -96,7 +114,7 @@
       const x = r[0] * cz - r[1] * sz, y = r[0] * sz + r[1] * cz, z = r[2];
       return [x, y * -sx + z * cx];
     };
-    return panel.blocks.map((rows) => rows.map(f));
+    return panel.blocks.map((rows, i) => rows.map((row) => f(row, panel.cols[i])));
   }
 
   // Text for SVG markup.
