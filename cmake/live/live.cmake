@@ -117,6 +117,7 @@ function(workbook_live)
   file(GENERATE OUTPUT "${out}/scenes.txt" CONTENT "${text}\n")
   _workbook_live_gsl(gsl_prefix gsl_status)
   include(ExternalProject)
+  cmake_host_system_information(RESULT cores QUERY NUMBER_OF_LOGICAL_CORES)
   ExternalProject_Add(live_modules
     DEPENDS live_gsl
     SOURCE_DIR "${WORKBOOK_ROOT}/cmake/live"
@@ -126,7 +127,10 @@ function(workbook_live)
                -DWORKBOOK_LIVE_GSL=${gsl_prefix} -DWORKBOOK_LIVE_GSL_STATUS=${gsl_status}
     # emscripten's JavaScript optimizer needs acorn: Debian's node finds it, another node is told
     # where Debian keeps it.
+    # The outer make's jobserver does not reach through `cmake -E env` (the inner build ran at
+    # -j1, minutes for the kit): the inner build is given the machine's cores itself.
     BUILD_COMMAND ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs ${CMAKE_COMMAND} --build <BINARY_DIR>
+                  --parallel ${cores}
     BUILD_ALWAYS ON
     INSTALL_COMMAND ""
     USES_TERMINAL_BUILD ON)
