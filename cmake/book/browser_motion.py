@@ -243,15 +243,20 @@ def check_page(exe, book, page, work, shots):
     b = Browser(exe, work)
     try:
         b.open_page("file://" + os.path.join(book, page))
-        deadline = time.time() + 30
+        # The viewers started, and the page's live scenes (live.js) settled: a live scene grows when
+        # its module has loaded and its first run is drawn, which moves whatever is below it.
+        deadline = time.time() + 60
         state = None
         while time.time() < deadline:
-            state = b.js("""(() => { const v = window.motionViewers || [];
+            state = b.js("""(() => { const v = window.motionViewers || [], l = window.liveScenes || [];
                 return { figures: document.querySelectorAll('figure.motion').length, viewers: v.length,
-                         ready: v.filter(x => x.ready).length, errors: v.filter(x => x.error).map(x => x.error) }; })()""")
-            if state["figures"] and state["viewers"] == state["figures"] and (state["ready"] == state["figures"] or state["errors"]):
+                         ready: v.filter(x => x.ready).length, errors: v.filter(x => x.error).map(x => x.error),
+                         live_busy: l.filter(x => x.state === 'loading' || (x.state === 'ready' && !x.runs)).length }; })()""")
+            if (state["figures"] and state["viewers"] == state["figures"] and not state["live_busy"]
+                    and (state["ready"] == state["figures"] or state["errors"])):
                 break
             time.sleep(0.2)
+        time.sleep(0.3)  # the live scenes' last layout
         if not state or not state["figures"]:
             fail("no motion viewer on the page")
             return out, False
