@@ -1,9 +1,15 @@
 # CMake helpers for the Grioli workbook: dependencies, the API topics (one function written
-# once, in two implementations), the graders, the scenes and the main job.
+# once, in two implementations), the graders, the scenes, the runs and the chapters. The other
+# rooms have CMake files of their own, included here: the support library (support/support.cmake),
+# the book (book/book.cmake) and the quality gates (checks/checks.cmake); the grading run's is
+# tests/grading/grading.cmake, included by the top-level CMakeLists.txt.
 include_guard(GLOBAL)
 
 get_filename_component(WORKBOOK_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 include(contents)  # workbook_read_contents(): the table of contents, read once
+include("${CMAKE_CURRENT_LIST_DIR}/support/support.cmake")  # workbook_support(), workbook_embed_gnuplot()
+include("${CMAKE_CURRENT_LIST_DIR}/book/book.cmake")  # workbook_book(), workbook_live_scene(), workbook_live()
+include("${CMAKE_CURRENT_LIST_DIR}/checks/checks.cmake")  # workbook_function_size(), ..., workbook_door_tests()
 
 include("${CMAKE_CURRENT_LIST_DIR}/pristine_stubs.cmake")  # WORKBOOK_PRISTINE_DIR: the stubs as committed
 
@@ -71,21 +77,6 @@ function(workbook_warnings target)
                          $<$<BOOL:${WORKBOOK_WERROR}>:-Werror>)
 endfunction()
 
-# ------------------------------------------------------------------------------------------
-# The support library of the workbook's own programs (cmake/tools/support/): reading and
-# writing files, trimming and splitting text, starting a program from an argument vector,
-# never through a shell, and filling the placeholders of an embedded gnuplot script. The grading run, the stub gate, the mutation gate and the scene kit
-# link it; its tests (support_test.cpp) prove each piece can fail.
-function(workbook_support)
-  set(dir "${WORKBOOK_ROOT}/cmake/tools/support")
-  add_library(workbook_support STATIC "${dir}/file.cpp" "${dir}/text.cpp" "${dir}/process.cpp" "${dir}/script.cpp")
-  target_include_directories(workbook_support PUBLIC "${WORKBOOK_ROOT}/cmake/tools")
-  workbook_warnings(workbook_support)
-  add_executable(support_test "${dir}/support_test.cpp")
-  target_link_libraries(support_test PRIVATE workbook_support doctest::doctest)
-  workbook_warnings(support_test)
-  doctest_discover_tests(support_test TEST_PREFIX "support: " PROPERTIES LABELS grading TIMEOUT 60)
-endfunction()
 
 # Where a topic's implementation comes from: "solutions", "exercises", or a folder.
 function(workbook_resolve_impl)
@@ -112,8 +103,8 @@ endfunction()
 # independent computations both check the exercises against, the graders' yardstick, beside them
 # and outside what a student's compile sees (the grading run gives it exercises/ only). Its
 # include root, tests/include/, holds the reference and nothing else, so that a scene reaches no
-# other file of tests/ (the graders' checks.hpp, the grading run): the test "code: a scene can
-# include the reference and nothing else of tests/" (workbook_reference_include_check) holds it.
+# other file of tests/ (the graders' checks.hpp, the grading run): the include check
+# (workbook_include_check, cmake/checks/include_check.cmake) holds it.
 set(WORKBOOK_API_INCLUDES "${WORKBOOK_ROOT}/exercises" "${WORKBOOK_ROOT}/exercises/provided")
 add_library(workbook_reference INTERFACE)
 target_include_directories(workbook_reference INTERFACE "${WORKBOOK_ROOT}/tests/include")
@@ -141,10 +132,19 @@ function(_workbook_topic_library target source deps libs)
   endif()
 endfunction()
 
+# The names of a list of topics as a user may write it: "rotation;precession" (a CMake list, what
+# workbook_topics writes), "rotation precession" or "rotation,precession".
+function(workbook_topic_names out value)
+  string(REGEX REPLACE "[ ,;]+" ";" names "${value}")
+  list(REMOVE_ITEM names "")
+  set(${out} "${names}" PARENT_SCOPE)
+endfunction()
+
 function(workbook_topic name)
   cmake_parse_arguments(T "" "CHAPTER" "DEPENDS;LIBS" ${ARGN})
   set(impl_dir "${WORKBOOK_IMPL_DIR}")
-  if(WORKBOOK_TOPICS AND NOT name IN_LIST WORKBOOK_TOPICS)
+  workbook_topic_names(own "${WORKBOOK_TOPICS}")
+  if(own AND NOT name IN_LIST own)
     set(impl_dir "${WORKBOOK_ROOT}/solutions")
   endif()
   set(source "${impl_dir}/${name}.cpp")
@@ -192,8 +192,8 @@ endfunction()
 
 # Tests of a provided library (tests/<name>_test.cpp): ordinary tests, outside the stub gate.
 function(workbook_unit_test name)
-  add_executable(test_${name} "${WORKBOOK_ROOT}/tests/${name}_test.cpp")
-  target_include_directories(test_${name} PRIVATE "${WORKBOOK_ROOT}/tests")
+  add_executable(test_${name} "${WORKBOOK_ROOT}/tests/${name}_test.cpp")  # checks.hpp: beside it
+  set_property(GLOBAL APPEND PROPERTY WORKBOOK_UNIT_TESTS test_${name})
   target_link_libraries(test_${name} PRIVATE workbook_doctest_main rigid_${name} doctest::doctest)
   set_target_properties(test_${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
   workbook_warnings(test_${name})
@@ -212,8 +212,8 @@ function(workbook_grader topic)
   cmake_parse_arguments(G "" "CHAPTER" "" ${ARGN})
   # The test file is compiled once; every flavour, and the grading run, links these objects.
   add_library(grade_${topic}_objects OBJECT "${WORKBOOK_ROOT}/tests/${topic}_test.cpp")
-  target_include_directories(grade_${topic}_objects PRIVATE "${WORKBOOK_ROOT}/tests"
-                             $<TARGET_PROPERTY:rigid_${topic},INTERFACE_INCLUDE_DIRECTORIES>)
+  # checks.hpp is beside it; tests/ is not on its path, so that it reaches nothing of the grading run.
+  target_include_directories(grade_${topic}_objects PRIVATE $<TARGET_PROPERTY:rigid_${topic},INTERFACE_INCLUDE_DIRECTORIES>)
   target_link_libraries(grade_${topic}_objects PRIVATE doctest::doctest Eigen3::Eigen workbook_reference)
   workbook_warnings(grade_${topic}_objects)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_GRADER_LIST "${topic}|${G_CHAPTER}")
@@ -242,50 +242,6 @@ function(workbook_grader topic)
                  "${topic}" "$<TARGET_FILE:${ref}>" "$<TARGET_FILE:grade_${topic}_stubs>")
     set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_TARGETS ${ref} grade_${topic}_stubs)
   endif()
-endfunction()
-
-# ------------------------------------------------------------------------------------------
-# gnuplot scripts embedded in a program (cmake/tools/support/script.hpp): each .gp file becomes
-# <namespace>::<id> (kit::gp::<id> unless NAMESPACE says otherwise), a support::Script holding
-# the file's name and text, in the generated header <header> (in <build>/gp/<target>/, on the
-# target's include path), so the program needs no path at run time; support::filled fills its
-# placeholders. <id> is the file's name without .gp and without a leading "<target>.". The .gp
-# stays the source: editing one re-runs CMake, which rewrites the header (only when its text
-# changed, so nothing else recompiles). The target must link workbook_support.
-#
-#   workbook_embed_gnuplot(<target> <header> [NAMESPACE <namespace>] <file.gp>...)
-function(workbook_embed_gnuplot target header)
-  cmake_parse_arguments(E "" "NAMESPACE" "" ${ARGN})
-  if(NOT E_NAMESPACE)
-    set(E_NAMESPACE kit::gp)
-  endif()
-  set(text "// Generated by workbook_embed_gnuplot (cmake/Workbook.cmake) from the .gp files: edit those.\n")
-  string(APPEND text "#pragma once\n\n#include \"support/script.hpp\"\n\nnamespace ${E_NAMESPACE} {\n")
-  foreach(file IN LISTS E_UNPARSED_ARGUMENTS)
-    get_filename_component(file_name "${file}" NAME)
-    string(REGEX REPLACE "\\.gp$" "" id "${file_name}")
-    string(REGEX REPLACE "^${target}\\." "" id "${id}")
-    if(NOT id MATCHES "^[a-z_][a-z0-9_]*$")
-      message(FATAL_ERROR "${file}: a gnuplot script's name must read <${target}.>id.gp, the id in a-z, 0-9 and _")
-    endif()
-    file(READ "${file}" body)
-    string(FIND "${body}" ")gp\"" clash)
-    if(NOT clash EQUAL -1)
-      message(FATAL_ERROR "${file} holds the text )gp\" that would end its embedded raw string")
-    endif()
-    string(APPEND text "\ninline constexpr ::support::Script ${id}{\"${file_name}\", R\"gp(${body})gp\"};\n")
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${file}")
-  endforeach()
-  string(APPEND text "\n}  // namespace ${E_NAMESPACE}\n")
-  set(dir "${CMAKE_BINARY_DIR}/gp/${target}")
-  set(old "")
-  if(EXISTS "${dir}/${header}")
-    file(READ "${dir}/${header}" old)
-  endif()
-  if(NOT old STREQUAL text)
-    file(WRITE "${dir}/${header}" "${text}")
-  endif()
-  target_include_directories(${target} PRIVATE "${dir}")
 endfunction()
 
 # ------------------------------------------------------------------------------------------
@@ -419,7 +375,7 @@ endfunction()
 # (a.b for a nested one; a boolean reads ON or OFF) must match its regex (key=regex; no '|' in
 # it), or be at most or at least a number (key<=number, key>=number: a range of numbers that a
 # regex would need '|' for). A corner test, named "corner: <scene> <label>", like the corner
-# sweep's; KIND names another kind of case ("stability: <scene> <label>", tests/stability.cmake),
+# sweep's; KIND names another kind of case ("stability: <scene> <label>", chapters/kit/stability.cmake),
 # labelled LABELS instead of "corner;<chapter>".
 #
 #   workbook_scene_case(<scene> <label> [KIND <kind> LABELS <label>...] ARGS <arg>...
@@ -465,18 +421,20 @@ function(workbook_contents)
   endforeach()
   list(TRANSFORM labels REPLACE "^(ch[0-9][0-9]).*" "\\1")
   set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST ${chapters})
-  # <build>/chapters.tsv: "NN<tab>folder" per chapter, for cmake/workbook (scenes NN).
-  set(tsv "")
-  foreach(ch IN LISTS chapters)
-    string(SUBSTRING "${ch}" 0 2 nn)
-    string(APPEND tsv "${nn}\t${ch}\n")
-  endforeach()
-  file(CONFIGURE OUTPUT "${CMAKE_BINARY_DIR}/chapters.tsv" CONTENT "${tsv}" @ONLY)
   set_property(GLOBAL PROPERTY WORKBOOK_CHAPTER_LABELS ${labels})
   set_property(GLOBAL PROPERTY WORKBOOK_CONTENTS "${json}")
 endfunction()
 
 function(workbook_chapters)
+  # WORKBOOK_TOPICS names declared topics only: a misspelt one would silently build from solutions/.
+  workbook_topic_names(own "${WORKBOOK_TOPICS}")
+  get_property(topics GLOBAL PROPERTY WORKBOOK_TOPIC_LIST)
+  foreach(t IN LISTS own)
+    if(NOT t IN_LIST topics)
+      string(REPLACE ";" " " topics "${topics}")
+      message(FATAL_ERROR "WORKBOOK_TOPICS: '${t}' is not a topic (they are: ${topics})")
+    endif()
+  endforeach()
   get_property(chapters GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST)
   foreach(ch IN LISTS chapters)
     if(EXISTS "${WORKBOOK_ROOT}/chapters/${ch}/CMakeLists.txt")
@@ -536,6 +494,10 @@ function(workbook_main_job)
     string(SUBSTRING "${ch}" 0 2 nn)
     string(REPLACE ";" "\n" lines "${lines}")
     file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/report/${ch}/scenes.txt" CONTENT "${lines}\n")
+    # build-scenes-NN builds them; scenes-NN builds and runs them (cmake/workbook scenes NN: the first
+    # shows a compile error as such, the second the runs).
+    add_custom_target(build-scenes-${nn})
+    add_dependencies(build-scenes-${nn} ${targets})
     add_custom_target(scenes-${nn}
       COMMAND ${CMAKE_COMMAND} -DSCENES=${CMAKE_BINARY_DIR}/report/${ch}/scenes.txt -DRUN=default
               -DFIGURES=${figures} -DREPORT=${CMAKE_BINARY_DIR}/report/${ch} -DIMPL=${WORKBOOK_IMPL}
@@ -578,356 +540,3 @@ function(workbook_main_job)
   endif()
 endfunction()
 
-# ------------------------------------------------------------------------------------------
-# The book (see cmake/tools/book.cpp and cmake/tools/snippets.cpp): the chapters rendered to
-# HTML in <build>/book, and the tests that keep the prose true to the code and the numbers.
-#   target book             render it again from the last run's reports (cmake/workbook run)
-#   target update-snippets  rewrite the code and the numbers quoted in the prose's sources
-function(workbook_book)
-  get_property(figures GLOBAL PROPERTY WORKBOOK_FIGURES_DIR)
-  set(root "${WORKBOOK_ROOT}")
-  set(runs "${CMAKE_BINARY_DIR}/runs.txt")
-
-  set(tools "${root}/cmake/tools")
-  add_executable(snippets "${tools}/snippets.cpp" "${tools}/book/snippet_values.cpp" "${tools}/book/numbers.cpp"
-                          "${tools}/book/names.cpp" "${tools}/book/markdown.cpp")
-  # One program, a translation unit per job: render, check the structure, check the figures.
-  add_executable(book_tool "${tools}/book.cpp" "${tools}/book/common.cpp" "${tools}/book/markdown.cpp"
-                           "${tools}/book/render.cpp" "${tools}/book/live.cpp" "${tools}/book/structure.cpp"
-                           "${tools}/book/figures.cpp")
-  get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
-  foreach(t snippets book_tool)
-    target_link_libraries(${t} PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11 workbook_support)
-    workbook_warnings(${t})
-    target_compile_options(${t} PRIVATE -O1)  # tools: quick to build, fast enough to run
-    set_target_properties(${t} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
-  endforeach()
-
-  # The test suite's book shows the committed reports and figures (what the repository says),
-  # in its own folder: never the numbers of its light smoke runs, never over the run's book.
-  set(test_book "${CMAKE_BINARY_DIR}/test/book")
-  add_test(NAME "book: every code snippet in the prose matches its source"
-           COMMAND snippets --check "${root}")
-  add_test(NAME "book: the code the prose names exists"
-           COMMAND snippets --check-names "${root}")
-  add_test(NAME "book: every number that looks measured is a value marker or says what it is, every section named by number is a link"
-           COMMAND snippets --check-numbers "${root}")
-  add_test(NAME "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
-           COMMAND book_tool --check-structure "${root}" --contents "${contents}")
-  add_test(NAME "book: every number in the prose is its run's committed value, and the scenes still report it"
-           COMMAND snippets --check-values "${root}" "${runs}" "${CMAKE_BINARY_DIR}/smoke/reports")
-  add_test(NAME "book: renders to HTML with MathML, its figures and no broken link"
-           COMMAND book_tool --render "${root}" --runs "${runs}" --out "${test_book}" --pandoc "${PANDOC_EXECUTABLE}"
-                   --strict --label "the committed reports (figures/)" --contents "${contents}")
-  add_test(NAME "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-           COMMAND bash "${root}/cmake/book/browser_test.sh" "${test_book}" "${CMAKE_BINARY_DIR}/test/browser" "${root}/chapters")
-  add_test(NAME "book: the browser checks fail on a book broken on purpose"
-           COMMAND bash "${root}/cmake/book/browser_selftest.sh" "${CMAKE_BINARY_DIR}/test/browser-selftest")
-  add_test(NAME "book: the motion checks fail on a viewer broken on purpose"
-           COMMAND python3 "${root}/cmake/book/browser_motion.py" --selftest "${CMAKE_BINARY_DIR}/test/motion-selftest")
-  add_test(NAME "book: the checks fail on a chapter broken on purpose"
-           COMMAND ${CMAKE_COMMAND} -DSNIPPETS=$<TARGET_FILE:snippets> -DBOOK=$<TARGET_FILE:book_tool>
-                   -DPANDOC=${PANDOC_EXECUTABLE} -DWORK=${CMAKE_BINARY_DIR}/test/book-selftest
-                   -P "${root}/cmake/book/selftest.cmake")
-  # The committed figures, and those the scenes as built draw now (in the smoke runs).
-  add_test(NAME "figures: Greek letters in UTF-8, in a font that has them"
-           COMMAND book_tool --check-figures "${root}" "${root}/figures" "${CMAKE_BINARY_DIR}/smoke")
-  set_tests_properties(
-    "book: every code snippet in the prose matches its source"
-    "book: the code the prose names exists"
-    "book: every number that looks measured is a value marker or says what it is, every section named by number is a link"
-    "book: every chapter is a lesson in the order the book teaches and every erratum gives numbers"
-    "book: every number in the prose is its run's committed value, and the scenes still report it"
-    "book: renders to HTML with MathML, its figures and no broken link"
-    "book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-    "book: the browser checks fail on a book broken on purpose"
-    "book: the motion checks fail on a viewer broken on purpose"
-    "book: the checks fail on a chapter broken on purpose"
-    "figures: Greek letters in UTF-8, in a font that has them"
-    PROPERTIES LABELS book TIMEOUT 300)
-  set_tests_properties("book: every number in the prose is its run's committed value, and the scenes still report it"
-                       "figures: Greek letters in UTF-8, in a font that has them"
-                       PROPERTIES FIXTURES_REQUIRED scene_reports)
-  set_tests_properties("book: renders to HTML with MathML, its figures and no broken link"
-                       PROPERTIES FIXTURES_SETUP book_html)
-  # 73 pages, their screenshots and the motion viewers: 249 s beside the grading suite at a load of
-  # 7, past 300 s at a higher one. The limit only stops a browser that hangs.
-  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-                       PROPERTIES FIXTURES_REQUIRED book_html SKIP_RETURN_CODE 77 TIMEOUT 900)
-  set_tests_properties("book: the browser checks fail on a book broken on purpose"
-                       "book: the motion checks fail on a viewer broken on purpose" PROPERTIES SKIP_RETURN_CODE 77)
-  # Two browsers at once on two cores time out: one browser test at a time.
-  set_tests_properties("book: in a browser every image loads, the math is MathML, no link is broken, nothing is wider than the column"
-                       "book: the browser checks fail on a book broken on purpose"
-                       "book: the motion checks fail on a viewer broken on purpose" PROPERTIES RESOURCE_LOCK browser)
-
-  add_custom_target(update-snippets
-    COMMAND snippets --update "${root}" "${runs}"
-    COMMENT "Refreshing the code and the numbers quoted in the chapters (numbers: from the committed reports in figures/)")
-  add_custom_target(book
-    COMMAND book_tool --render "${root}" --runs "${runs}" --figures "${figures}"
-            --out "${CMAKE_BINARY_DIR}/book" --pandoc "${PANDOC_EXECUTABLE}" --contents "${contents}"
-            --label "the last cmake/workbook run on the ${WORKBOOK_IMPL} implementation"
-    COMMENT "Rendering the book from the last run's reports into ${CMAKE_BINARY_DIR}/book")
-endfunction()
-
-# The stub gate: every grading test passes on solutions/ and fails on the pristine stubs.
-function(workbook_stub_gate)
-  if(NOT WORKBOOK_STUB_GATE)
-    return()
-  endif()
-  get_property(args GLOBAL PROPERTY WORKBOOK_GATE_ARGS)
-  add_test(NAME "stub gate: every grading test passes on solutions and fails on the stubs"
-           COMMAND stub_gate ${args})
-  set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
-                       PROPERTIES LABELS "gate" TIMEOUT 600)
-  # The gate itself must be able to fail: handed the reference as if it were the stubs,
-  # it must find every test "passing on the stubs" and say so.
-  list(GET args 0 topic)
-  list(GET args 1 reference)
-  add_test(NAME "stub gate: fails when a grader passes on its stubs"
-           COMMAND stub_gate "${topic}" "${reference}" "${reference}")
-  set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
-                       LABELS "gate" WILL_FAIL TRUE)
-  # Both write stub_gate_<topic>_*.jsonl in the build folder: never at the same time.
-  set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
-                       "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_reports)
-endfunction()
-
-# ------------------------------------------------------------------------------------------
-# The grading run (tests/grading/): `cmake/workbook grade` and `cmake/workbook check`.
-#
-# Writes grading/topics.txt, the facts the harness needs about every topic that has graders:
-# its chapter, the grader's compiled test objects and the exact files to link a student's
-# object with (the doctest main and the reference libraries of its dependencies, with their
-# own libraries). The target `grading` builds all of it once, plus grading/manifest.txt (every
-# exercise and test, listed from the reference graders). Call once, after every topic,
-# provided library and grader is declared.
-
-# The files to link after a student's object, for the link interface of <items>: the closure
-# of their link libraries in link order (each library before the ones it needs).
-function(_workbook_link_closure out_files out_targets)
-  set(files "")
-  set(targets "")
-  set(stack ${ARGN})
-  set(steps 0)
-  while(stack)
-    list(POP_FRONT stack item)
-    math(EXPR steps "${steps} + 1")
-    if(steps GREATER 10000)
-      message(FATAL_ERROR "workbook_grading: the link libraries of ${ARGN} do not terminate")
-    endif()
-    if(item MATCHES "^\\$<LINK_ONLY:(.+)>$")
-      set(item "${CMAKE_MATCH_1}")
-    endif()
-    if(item STREQUAL "")
-      continue()
-    endif()
-    if(TARGET "${item}")
-      get_target_property(real "${item}" ALIASED_TARGET)
-      if(real)
-        set(item "${real}")
-      endif()
-      get_target_property(type "${item}" TYPE)
-      get_target_property(imported "${item}" IMPORTED)
-      if(type MATCHES "^(STATIC|SHARED|UNKNOWN)_LIBRARY$")
-        list(APPEND files "$<TARGET_LINKER_FILE:${item}>")
-      elseif(type STREQUAL "OBJECT_LIBRARY")
-        list(APPEND files "$<TARGET_OBJECTS:${item}>")
-      endif()
-      if(NOT imported AND NOT type STREQUAL "INTERFACE_LIBRARY")
-        list(APPEND targets "${item}")
-      endif()
-      get_target_property(next "${item}" INTERFACE_LINK_LIBRARIES)
-      if(next)
-        list(PREPEND stack ${next})
-      endif()
-    elseif(item MATCHES "^-" OR IS_ABSOLUTE "${item}" OR item MATCHES "^\\$<")
-      list(APPEND files "${item}")
-    else()
-      list(APPEND files "-l${item}")
-    endif()
-  endwhile()
-  # Keep the last occurrence of each: every library then comes after all that need it.
-  list(REVERSE files)
-  list(REMOVE_DUPLICATES files)
-  list(REVERSE files)
-  list(REMOVE_DUPLICATES targets)
-  set(${out_files} "${files}" PARENT_SCOPE)
-  set(${out_targets} "${targets}" PARENT_SCOPE)
-endfunction()
-
-# The topics the grading run grades: WORKBOOK_GRADING_TOPICS ("rotation precession", or empty
-# for every topic with graders). The Gradescope autograder (cmake/workbook gradescope) builds
-# only these, so an assignment on one chapter builds and grades one chapter.
-set(WORKBOOK_GRADING_TOPICS "" CACHE STRING "Grade only these topics (empty: every topic with graders)")
-function(workbook_grading_graders out)
-  get_property(graders GLOBAL PROPERTY WORKBOOK_GRADER_LIST)
-  string(REPLACE " " ";" wanted "${WORKBOOK_GRADING_TOPICS}")
-  list(REMOVE_ITEM wanted "")
-  set(kept "")
-  set(known "")
-  foreach(entry IN LISTS graders)
-    string(REPLACE "|" ";" fields "${entry}")
-    list(GET fields 0 topic)
-    list(APPEND known ${topic})
-    if(NOT wanted OR topic IN_LIST wanted)
-      list(APPEND kept "${entry}")
-    endif()
-  endforeach()
-  foreach(topic IN LISTS wanted)
-    if(NOT topic IN_LIST known)
-      string(REPLACE ";" " " known "${known}")
-      message(FATAL_ERROR "WORKBOOK_GRADING_TOPICS: '${topic}' is not a topic with graders (they are: ${known})")
-    endif()
-  endforeach()
-  set(${out} "${kept}" PARENT_SCOPE)
-endfunction()
-
-function(workbook_grading)
-  workbook_grading_graders(graders)
-  set(dir "${CMAKE_BINARY_DIR}/grading")
-  # grading/catalog.tsv: every topic with graders and its chapter ("<topic>\t<chNN>" per line, in
-  # chapter order), whatever WORKBOOK_GRADING_TOPICS keeps: what `cmake/workbook check` reads to
-  # know which topics a chapter, a topic or an exercise names. Written when CMake configures, from
-  # the workbook_topic() declarations, the one place the topics are declared.
-  get_property(all_graders GLOBAL PROPERTY WORKBOOK_GRADER_LIST)
-  set(catalog "")
-  foreach(entry IN LISTS all_graders)
-    string(REPLACE "|" "\t" entry "${entry}")
-    string(APPEND catalog "${entry}\n")
-  endforeach()
-  file(CONFIGURE OUTPUT "${dir}/catalog.tsv" CONTENT "${catalog}" @ONLY)
-  string(TOUPPER "${CMAKE_BUILD_TYPE}" config)
-  set(facts "# Generated by CMake (workbook_grading in cmake/Workbook.cmake): the facts the grading run needs.\n")
-  string(APPEND facts "root\t${WORKBOOK_ROOT}\n")
-  get_property(contents GLOBAL PROPERTY WORKBOOK_CONTENTS)
-  string(APPEND facts "contents\t${contents}\n")
-  string(APPEND facts "build\t${CMAKE_BINARY_DIR}\n")
-  string(APPEND facts "compiler\t${CMAKE_CXX_COMPILER}\n")
-  string(APPEND facts "nm\t${CMAKE_NM}\n")
-  string(APPEND facts "compile_commands\t${CMAKE_BINARY_DIR}/compile_commands.json\n")
-  string(APPEND facts "link_flags\t${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${config}} ${CMAKE_EXE_LINKER_FLAGS}\n")
-  set(references "")
-  set(needed workbook_doctest_main)
-  foreach(entry IN LISTS graders)
-    string(REPLACE "|" ";" entry "${entry}")
-    list(GET entry 0 topic)
-    list(GET entry 1 chapter)
-    if(TARGET grade_${topic}_solutions)
-      set(reference grade_${topic}_solutions)
-    else()
-      set(reference grade_${topic})
-    endif()
-    list(APPEND references ${reference})
-    get_target_property(interface rigid_${topic}_solutions INTERFACE_LINK_LIBRARIES)
-    if(NOT interface)
-      set(interface "")
-    endif()
-    _workbook_link_closure(files targets ${interface})
-    list(APPEND needed grade_${topic}_objects ${targets})
-    string(APPEND facts "topic\t${topic}\t${chapter}\n")
-    string(APPEND facts "reference\t$<TARGET_FILE:${reference}>\n")
-    string(APPEND facts "objects\t$<JOIN:$<TARGET_OBJECTS:grade_${topic}_objects>,\t>\n")
-    if(TARGET grade_${topic}_private)  # tests/grading/private.cmake: listed, never linked for a student
-      string(APPEND facts "private\t$<TARGET_FILE:grade_${topic}_private>\n")
-      list(APPEND references grade_${topic}_private)
-    endif()
-    string(APPEND facts "link")
-    foreach(f IN LISTS files)
-      string(APPEND facts "\t${f}")
-    endforeach()
-    string(APPEND facts "\n")
-  endforeach()
-  file(GENERATE OUTPUT "${dir}/topics.txt" CONTENT "${facts}")
-  set(points "${WORKBOOK_ROOT}/tests/grading/points.txt")
-  add_custom_command(OUTPUT "${dir}/manifest.txt"
-    COMMAND workbook_grade manifest --topics "${dir}/topics.txt" --points "${points}"
-            --out "${dir}/manifest.txt"
-    DEPENDS workbook_grade ${references} "${dir}/topics.txt" "${points}" workbook_doctest_main
-            "${contents}"
-    COMMENT "Listing the graders' exercises and tests in grading/manifest.txt")
-  add_custom_target(grading ALL DEPENDS "${dir}/manifest.txt")
-  list(REMOVE_DUPLICATES needed)
-  add_dependencies(grading workbook_grade ${needed})
-  if(TARGET grading_remote)
-    add_dependencies(grading grading_remote)  # the judges and the student's side (tests/grading/CMakeLists.txt)
-  endif()
-endfunction()
-
-# ------------------------------------------------------------------------------------------
-# Short functions in chapters/, exercises/provided/, cmake/tools/ and tests/grading/: none over
-# WORKBOOK_FUNCTION_LINES lines, as clang-tidy's readability-function-size counts them, measured in
-# a second by the tool function_size (universal-ctags and a lexer: cmake/function_size.cmake, which
-# cmake/workbook test installs). A second test proves the check can fail and that it counts as
-# Debian's clang-tidy does on functions of every shape.
-set(WORKBOOK_FUNCTION_LINES 60 CACHE STRING "The longest function allowed in chapters, exercises/provided, cmake/tools and tests/grading")
-function(workbook_function_size)
-  set(tools "${WORKBOOK_ROOT}/cmake/tools")
-  add_executable(function_size "${tools}/function_size.cpp")
-  target_link_libraries(function_size PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11 workbook_support)
-  workbook_warnings(function_size)
-  target_compile_options(function_size PRIVATE -O1)
-  set_target_properties(function_size PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
-  find_program(CLANG_TIDY_EXECUTABLE NAMES clang-tidy clang-tidy-14)
-  set(tidy "${CLANG_TIDY_EXECUTABLE}")
-  if(NOT tidy)
-    set(tidy "")
-  endif()
-  set(script "${WORKBOOK_ROOT}/cmake/function_size.cmake")
-  set(check "code: no function in chapters, exercises/provided, cmake/tools or tests/grading is over ${WORKBOOK_FUNCTION_LINES} lines")
-  set(selftest "code: the function-size check flags a function one line too long and counts as clang-tidy does")
-  add_test(NAME "${check}"
-           COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:function_size> -DROOT=${WORKBOOK_ROOT}
-                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
-  add_test(NAME "${selftest}"
-           COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:function_size> -DTIDY=${tidy} -DROOT=${WORKBOOK_ROOT}
-                   -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
-  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300
-                       SKIP_REGULAR_EXPRESSION "SKIPPED: (clang-tidy|universal-ctags) was not found")
-endfunction()
-
-# ------------------------------------------------------------------------------------------
-# What a scene can include from tests/: the reference (tests/include/reference/) and nothing else,
-# checked with every scene's own include path (cmake/reference_include_check.cmake); the
-# self-test puts tests/ back on the path (a planted include root) and must see it flagged.
-function(workbook_reference_include_check)
-  get_property(scenes GLOBAL PROPERTY WORKBOOK_SCENE_LIST)
-  set(text "")
-  foreach(entry IN LISTS scenes)
-    string(REPLACE "|" ";" parts "${entry}")
-    list(GET parts 1 name)
-    string(APPEND text "${name}|$<JOIN:$<TARGET_PROPERTY:${name},INCLUDE_DIRECTORIES>,|>\n")
-  endforeach()
-  set(list "${CMAKE_BINARY_DIR}/test/scene_includes.txt")
-  file(GENERATE OUTPUT "${list}" CONTENT "${text}")
-  set(script "${WORKBOOK_ROOT}/cmake/reference_include_check.cmake")
-  set(check "code: a scene can include the reference and nothing else of tests/")
-  set(selftest "code: the include check flags tests/checks.hpp when tests/ is on a scene's include path")
-  set(args -DCXX=${CMAKE_CXX_COMPILER} -DROOT=${WORKBOOK_ROOT} -DSCENES=${list})
-  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check
-                                   -P "${script}")
-  add_test(NAME "${selftest}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check-selftest
-                                      -DPLANT=${WORKBOOK_ROOT}/tests -P "${script}")
-  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300)
-endfunction()
-
-# ------------------------------------------------------------------------------------------
-# The layout of the C++ sources: as .clang-format says (cmake/format_check.cmake; Debian's
-# clang-format, which cmake/workbook test installs). A second test proves the check can fail.
-function(workbook_format_check)
-  find_program(CLANG_FORMAT_EXECUTABLE NAMES clang-format clang-format-14)
-  set(format "${CLANG_FORMAT_EXECUTABLE}")
-  if(NOT format)
-    set(format "")
-  endif()
-  set(script "${WORKBOOK_ROOT}/cmake/format_check.cmake")
-  set(check "code: every C++ source is laid out as .clang-format says")
-  set(selftest "code: the format check flags a badly laid out file")
-  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT} -P "${script}")
-  add_test(NAME "${selftest}"
-           COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT}
-                   -DSELFTEST=${CMAKE_BINARY_DIR}/test/format-check -P "${script}")
-  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code
-                       SKIP_REGULAR_EXPRESSION "SKIPPED: clang-format was not found")
-endfunction()

@@ -1,5 +1,5 @@
 // The one doctest main shared by every grader binary and the reseeding of checks::rng(). The
-// grading run's verdict reporter, linked with it, is beside its reader: tests/grading/reporter.cpp.
+// grading run's verdict reporter, linked with it, is beside its reader: tests/grading/engine/reporter.cpp.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 

@@ -4,7 +4,7 @@
 // measured exactly as work_precision measures each point of its sweeps: against the long-double
 // Taylor reference, at the scenario's output times. Its figure: how that run's error and energy
 // drift grow along the time span, beside the double-precision floor. The scene the book's
-// Chapter 7 runs live (cmake/live/work_precision_point.json).
+// Chapter 7 runs live (cmake/book/live/work_precision_point.json).
 #include <algorithm>
 #include <cmath>
 #include <map>

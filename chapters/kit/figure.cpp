@@ -100,7 +100,7 @@ std::uintmax_t Figure::finish() {
     fs::remove(staged_path_, ec);
     if (!support::write_file(script_path_, text_))
         throw NumericalFailure("figure " + final_path_ + ": cannot write its script " + script_path_);
-    // gnuplot from its argument vector, no shell between (cmake/tools/support/process.hpp).
+    // gnuplot from its argument vector, no shell between (cmake/support/include/support/process.hpp).
     const support::Result r = support::run({"gnuplot", "-d", script_path_});
     fs::remove(script_path_, ec);
     const auto size = fs::exists(staged_path_) ? fs::file_size(staged_path_) : 0;

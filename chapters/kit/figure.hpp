@@ -25,7 +25,7 @@
 // (workbook_scene, cmake/Workbook.cmake), so a scene needs no path at run time. A placeholder
 // is @name@ (letters, digits, _), a syntax gnuplot's own text never has; a placeholder left
 // unfilled, or a value for one the script does not have, throws std::logic_error. The filling is
-// the support library's (cmake/tools/support/script.hpp), which the grading run's class report
+// the support library's (cmake/support/include/support/script.hpp), which the grading run's class report
 // uses too: kit::Script, kit::Fill, kit::filled and kit::joined are its names here.
 //
 // What it guarantees, because gnuplot itself does not (see research/grading-anchors.md, 4):

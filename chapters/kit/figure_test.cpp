@@ -1,6 +1,6 @@
 // The kit's gnuplot scripts and figures (figure.hpp): its own scripts filled by their names (the
 // filling itself, and each way of getting it wrong, is tested with the support library:
-// cmake/tools/support/support_test.cpp), and a figure drawn, staged and published.
+// cmake/support/support_test.cpp), and a figure drawn, staged and published.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include "figure.hpp"
 

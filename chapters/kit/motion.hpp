@@ -1,4 +1,4 @@
-// A sampled motion for the book's motion viewer (cmake/book/motion_viewer.js): what a scene
+// A sampled motion for the book's motion viewer (cmake/book/web/motion_viewer.js): what a scene
 // computed, written as JSON only when the scene is given `--motion FILE`, so that scenes that
 // do not show a motion stay lean. The page never integrates anything: it plays back R(t) at
 // the scene's own sample times (and turns the body between two samples along the shortest

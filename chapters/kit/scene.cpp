@@ -459,7 +459,7 @@ namespace {
 
 // Stops a scene that runs past 3 budgets + 10 s: its estimate of its work was wrong, and a
 // scene must never hang. It discards the staged figures, says so on stderr and exits with 1.
-// In the book's live scenes (WebAssembly, no threads: cmake/live/) there is none: the page
+// In the book's live scenes (WebAssembly, no threads: cmake/book/live/) there is none: the page
 // runs the scene's default-sized work, and the browser stops a page script that hangs.
 #ifdef __EMSCRIPTEN__
 struct Watchdog {

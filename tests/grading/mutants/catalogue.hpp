@@ -1,4 +1,4 @@
-// The catalogue of likely mistakes (tests/grading/mistakes.hpp), made from a run of the mutation
+// The catalogue of likely mistakes (tests/grading/engine/mistakes.hpp), made from a run of the mutation
 // gate: workbook_mutants catalogue and workbook_mutants stale (mutants.cpp's commands).
 #pragma once
 

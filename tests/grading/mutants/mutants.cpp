@@ -821,17 +821,8 @@ int catalogue(const Options& o) {
     return mutants::write_catalogue(root, manifest_text, o.from, o.catalogue, listed, uses);
 }
 
-Options parse(int argc, char** argv) {
-    Options o;
-    const std::string usage =
-        "usage: workbook_mutants run|list --setup <build>/grading --solutions <dir> [--out <dir>] [--topic T] "
-        "[--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] [--one-by-one]";
-    if (argc < 2) die(usage);
-    o.command = argv[1];
-    if (o.command != "run" && o.command != "list" && o.command != "catalogue" && o.command != "stale")
-        die("unknown command '" + o.command + "' (run, list, catalogue, stale or audit)");
-    CLI::App app{"workbook_mutants"};
-    app.set_help_flag();
+// The options of run, list, catalogue and stale (each takes them all; the usage above).
+void command_options(CLI::App& app, Options& o) {
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     for (const auto& [name, value] : {std::pair{"--setup", &o.setup},
                                       {"--solutions", &o.solutions},
@@ -857,49 +848,66 @@ Options parse(int argc, char** argv) {
     app.add_option("--timeout", o.timeout)->check(at_least(1));
     app.add_option("--build-timeout", o.build_timeout)->check(at_least(1));
     app.add_flag("--one-by-one", o.one_by_one);
-    try {
-        app.parse(argc - 1, argv + 1);
-    } catch (const CLI::ParseError& e) {
-        die(std::string(e.what()) + "\n" + usage);
-    }
+}
+
+// What each command needs; a missing one exits with status 2.
+void require(const Options& o) {
     if (o.setup.empty() || o.solutions.empty()) die("--setup and --solutions are required");
     if (o.command == "run" && o.out.empty()) die("run needs --out <folder>");
     if (o.command == "catalogue" && (o.from.empty() || o.catalogue.empty()))
         die("catalogue needs --from <the gate's out folder> and --catalogue <folder>");
     if (o.command == "stale" && o.catalogue.empty()) die("stale needs --catalogue <folder>");
-    return o;
+}
+
+// audit --catalogue <dir> --results <grades>/results [--may-name <student>]... [--plant] [--measure]
+struct Audit {
+    std::string catalogue, results;
+    std::vector<std::string> may_name;
+    bool plant = false, measure = false;
+};
+
+void audit_options(CLI::App& app, Audit& a) {
+    app.add_flag("--measure", a.measure);
+    app.add_option("--catalogue", a.catalogue)->required();
+    app.add_option("--results", a.results)->required();
+    app.add_option("--may-name", a.may_name);
+    app.add_flag("--plant", a.plant);
+}
+
+int list(const Options& o) {
+    for (const auto& m : generate(o))
+        std::printf("%s\t%s\t%s\t%d\t%s\t%s\n", m.id.c_str(), m.function.c_str(), m.op.c_str(), m.line,
+                    m.before.c_str(), m.after.c_str());
+    return 0;
 }
 
 }  // namespace
 
-// audit --catalogue <dir> --results <grades>/results [--may-name <student>]... [--plant]
-static int audit(int argc, char** argv) {
-    std::string catalogue, results;
-    std::vector<std::string> may_name;
-    bool plant = false, measure = false;
-    CLI::App app{"workbook_mutants audit"};
-    app.add_flag("--measure", measure);
-    app.add_option("--catalogue", catalogue)->required();
-    app.add_option("--results", results)->required();
-    app.add_option("--may-name", may_name);
-    app.add_flag("--plant", plant);
-    try {
-        app.parse(argc - 1, argv + 1);
-    } catch (const CLI::ParseError& e) {
-        die(std::string("audit: ") + e.what());
-    }
-    return measure ? mutants::measure(catalogue, results) : mutants::audit(catalogue, results, may_name, plant);
-}
-
 int main(int argc, char** argv) {
-    if (argc > 1 && std::string(argv[1]) == "audit") return audit(argc, argv);
-    const Options o = parse(argc, argv);
-    if (o.command == "list") {
-        for (const auto& m : generate(o))
-            std::printf("%s\t%s\t%s\t%d\t%s\t%s\n", m.id.c_str(), m.function.c_str(), m.op.c_str(), m.line,
-                        m.before.c_str(), m.after.c_str());
-        return 0;
+    const std::string usage =
+        "usage: workbook_mutants run|list|catalogue|stale --setup <build>/grading --solutions <dir> [--out <dir>] "
+        "[--topic T] [--mutant ID] [--sample N --seed S] [--allow F] [-j N] [--timeout s] [--build-timeout s] "
+        "[--one-by-one]\n       workbook_mutants audit --catalogue <dir> --results <dir> [--may-name S]... [--plant] "
+        "[--measure]";
+    Options o;
+    Audit a;
+    CLI::App app{"workbook_mutants: the mutation gate (tests/grading/README.md, \"The mutation gate\")"};
+    app.set_help_flag();
+    app.require_subcommand(1);
+    for (const char* name : {"run", "list", "catalogue", "stale"})
+        command_options(*app.add_subcommand(name)->callback([&o, name] { o.command = name; }), o);
+    CLI::App* audit_command = app.add_subcommand("audit");
+    audit_options(*audit_command, a);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        die(std::string(e.what()) + "\n" + usage);
     }
+    if (audit_command->parsed())
+        return a.measure ? mutants::measure(a.catalogue, a.results)
+                         : mutants::audit(a.catalogue, a.results, a.may_name, a.plant);
+    require(o);
+    if (o.command == "list") return list(o);
     if (o.command == "catalogue" || o.command == "stale") return catalogue(o);
     return run(o);
 }

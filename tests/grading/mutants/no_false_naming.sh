@@ -5,7 +5,7 @@
 #   no_false_naming.sh <root> <build> <work>
 #
 # grades, with an instructor's --seed, a class of rotation.cpp submissions that must get no likely
-# mistake: the reference, the three honest solutions of tests/grading/similarity/, the pristine
+# mistake: the reference, the three honest solutions of tests/grading/tests/similarity/, the pristine
 # stub, a file that does not compile, an empty folder, and the reference with axis_angle made to
 # crash (cases/crash.cpp) and compose made to loop (cases/timeout.cpp); and failures that are no
 # mistake of the catalogue's: an exit(0) in a test, fake success lines, a table of the public
@@ -23,7 +23,7 @@ fail() { echo "FAILED: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work/class"
 add() { mkdir -p "$work/class/$1/exercises" && cat > "$work/class/$1/exercises/rotation.cpp"; }
 add reference < "$root/solutions/rotation.cpp"
-for h in honest_eigen_geometry honest_levi_civita honest_rodrigues; do add "$h" < "$root/tests/grading/similarity/$h.cpp"; done
+for h in honest_eigen_geometry honest_levi_civita honest_rodrigues; do add "$h" < "$root/tests/grading/tests/similarity/$h.cpp"; done
 add stub < "$build/pristine/exercises/rotation.cpp"
 { cat "$root/solutions/rotation.cpp"; echo 'int does_not_build = ;'; } | add compile_error
 mkdir -p "$work/class/empty"
@@ -31,7 +31,7 @@ mkdir -p "$work/class/empty"
 replace() {
   local name=$1 function=$2 case=$3
   { sed -E "s/^([A-Za-z][A-Za-z0-9_:<>,&* ]* )${function}\(/\1${function}_reference_(/" "$root/solutions/rotation.cpp"
-    grep -v '^// ' "$root/tests/grading/cases/$case.cpp"; } | add "$name"
+    grep -v '^// ' "$root/tests/grading/tests/cases/$case.cpp"; } | add "$name"
 }
 replace crash axis_angle crash
 replace timeout compose timeout

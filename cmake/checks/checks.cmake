@@ -1,0 +1,111 @@
+# The quality gates (cmake/checks/, README.md there): checks of the workbook's own sources and pages
+# that no compiler makes. Each comes with a self-test that plants the fault it hunts:
+#   function_size.cmake  no function over WORKBOOK_FUNCTION_LINES lines (function_size.cpp, universal-ctags)
+#   format_check.cmake   every C++ source laid out as .clang-format says
+#   include_check.cmake  what a scene, a grader and the grading engine may include
+#   readme/              the front doors: every command the pages tell a user to type, run as written
+#   margins.sh           (a maintainer's tool, no test) the graders' margins on the reference solutions
+# Included by cmake/Workbook.cmake; each workbook_*() below is called once, after every target.
+include_guard(GLOBAL)
+
+# Short functions in chapters/, exercises/provided/, cmake/ and tests/grading/: none over
+# WORKBOOK_FUNCTION_LINES lines, as clang-tidy's readability-function-size counts them, measured in
+# a second by the tool function_size (universal-ctags and a lexer: cmake/checks/function_size.cmake, which
+# cmake/workbook test installs). A second test proves the check can fail and that it counts as
+# Debian's clang-tidy does on functions of every shape.
+set(WORKBOOK_FUNCTION_LINES 60 CACHE STRING "The longest function allowed in chapters, exercises/provided, cmake and tests/grading")
+function(workbook_function_size)
+  add_executable(function_size "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/function_size.cpp")
+  target_link_libraries(function_size PRIVATE nlohmann_json::nlohmann_json CLI11::CLI11 workbook_support)
+  workbook_warnings(function_size)
+  target_compile_options(function_size PRIVATE -O1)
+  set_target_properties(function_size PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tools")
+  find_program(CLANG_TIDY_EXECUTABLE NAMES clang-tidy clang-tidy-14)
+  set(tidy "${CLANG_TIDY_EXECUTABLE}")
+  if(NOT tidy)
+    set(tidy "")
+  endif()
+  set(script "${WORKBOOK_ROOT}/cmake/checks/function_size.cmake")
+  set(check "code: no function in chapters, exercises/provided, cmake or tests/grading is over ${WORKBOOK_FUNCTION_LINES} lines")
+  set(selftest "code: the function-size check flags a function one line too long and counts as clang-tidy does")
+  add_test(NAME "${check}"
+           COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:function_size> -DROOT=${WORKBOOK_ROOT}
+                   -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  add_test(NAME "${selftest}"
+           COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:function_size> -DTIDY=${tidy} -DROOT=${WORKBOOK_ROOT}
+                   -DSELFTEST=${CMAKE_BINARY_DIR}/test/function-size -DLINES=${WORKBOOK_FUNCTION_LINES} -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: (clang-tidy|universal-ctags) was not found")
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# What each kind of source may include (include_check.cmake): a scene the reference and nothing else
+# of tests/, no scene or grader the grading engine or the book's tools, the grading engine no scene;
+# checked with every target's own include path and on every quoted #include of their sources. The
+# self-test plants one fault of each kind and must see each flagged.
+function(workbook_include_check)
+  set(text "")
+  get_property(scenes GLOBAL PROPERTY WORKBOOK_SCENE_LIST)
+  foreach(entry IN LISTS scenes)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 1 name)
+    list(APPEND roles "scene|${name}")
+  endforeach()
+  get_property(graders GLOBAL PROPERTY WORKBOOK_GRADER_LIST)
+  foreach(entry IN LISTS graders)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 0 topic)
+    list(APPEND roles "grader|grade_${topic}_objects")
+  endforeach()
+  get_property(units GLOBAL PROPERTY WORKBOOK_UNIT_TESTS)
+  foreach(name IN LISTS units)
+    list(APPEND roles "grader|${name}")
+  endforeach()
+  foreach(name IN ITEMS workbook_grading workbook_grade workbook_hints workbook_topics workbook_judge workbook_serve
+                        workbook_mutants)
+    list(APPEND roles "engine|${name}")
+  endforeach()
+  foreach(entry IN LISTS roles)
+    string(REPLACE "|" ";" parts "${entry}")
+    list(GET parts 1 name)
+    string(APPEND text "${entry}|$<JOIN:$<TARGET_PROPERTY:${name},INCLUDE_DIRECTORIES>,|>\n")
+  endforeach()
+  set(list "${CMAKE_BINARY_DIR}/test/include_check_targets.txt")
+  file(GENERATE OUTPUT "${list}" CONTENT "${text}")
+  set(script "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/include_check.cmake")
+  set(check "code: a scene reaches the reference and nothing else of tests/, no scene or grader the grading engine or the book's tools, the grading engine no scene")
+  set(selftest "code: the include check flags a planted include path and a planted #include of each kind")
+  set(args -DCXX=${CMAKE_CXX_COMPILER} -DROOT=${WORKBOOK_ROOT} -DTARGETS=${list})
+  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check
+                                   -P "${script}")
+  add_test(NAME "${selftest}" COMMAND ${CMAKE_COMMAND} ${args} -DWORK=${CMAKE_BINARY_DIR}/test/include-check-selftest
+                                      -DPLANT=ON -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 300)
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The layout of the C++ sources: as .clang-format says (cmake/checks/format_check.cmake; Debian's
+# clang-format, which cmake/workbook test installs). A second test proves the check can fail.
+function(workbook_format_check)
+  find_program(CLANG_FORMAT_EXECUTABLE NAMES clang-format clang-format-14)
+  set(format "${CLANG_FORMAT_EXECUTABLE}")
+  if(NOT format)
+    set(format "")
+  endif()
+  set(script "${WORKBOOK_ROOT}/cmake/checks/format_check.cmake")
+  set(check "code: every C++ source is laid out as .clang-format says")
+  set(selftest "code: the format check flags a badly laid out file")
+  add_test(NAME "${check}" COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT} -P "${script}")
+  add_test(NAME "${selftest}"
+           COMMAND ${CMAKE_COMMAND} -DFORMAT=${format} -DROOT=${WORKBOOK_ROOT}
+                   -DSELFTEST=${CMAKE_BINARY_DIR}/test/format-check -P "${script}")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: clang-format was not found")
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The front doors (readme/): every command of the front page, the instructor's manual, the
+# contributors' page and the chapters' "Check your work", run as written in a scratch clone.
+function(workbook_door_tests)
+  add_subdirectory("${CMAKE_CURRENT_FUNCTION_LIST_DIR}/readme" "${CMAKE_BINARY_DIR}/checks/readme")
+endfunction()
