@@ -132,18 +132,31 @@ function(_workbook_topic_library target source deps libs)
   endif()
 endfunction()
 
-# The names of a list of topics as a user may write it: "rotation;precession" (a CMake list, what
-# workbook_topics writes), "rotation precession" or "rotation,precession".
-function(workbook_topic_names out value)
-  string(REGEX REPLACE "[ ,;]+" ";" names "${value}")
+# The topics named in <variable> (WORKBOOK_TOPICS, WORKBOOK_GRADING_TOPICS) as a user may write
+# them: "rotation;precession" (a CMake list, what workbook_topics writes), "rotation precession" or
+# "rotation,precession". CHECKED, once every topic is declared: each must be one, or the configure
+# stops naming it (a misspelt topic would silently be built from solutions/, or not graded).
+#
+#   workbook_topic_names(<out> <variable> [CHECKED])
+function(workbook_topic_names out variable)
+  string(REGEX REPLACE "[ ,;]+" ";" names "${${variable}}")
   list(REMOVE_ITEM names "")
+  if(ARGN STREQUAL "CHECKED")
+    get_property(topics GLOBAL PROPERTY WORKBOOK_TOPIC_LIST)
+    foreach(t IN LISTS names)
+      if(NOT t IN_LIST topics)
+        string(REPLACE ";" " " topics "${topics}")
+        message(FATAL_ERROR "${variable}: '${t}' is not a topic with graders (they are: ${topics})")
+      endif()
+    endforeach()
+  endif()
   set(${out} "${names}" PARENT_SCOPE)
 endfunction()
 
 function(workbook_topic name)
   cmake_parse_arguments(T "" "CHAPTER" "DEPENDS;LIBS" ${ARGN})
   set(impl_dir "${WORKBOOK_IMPL_DIR}")
-  workbook_topic_names(own "${WORKBOOK_TOPICS}")
+  workbook_topic_names(own WORKBOOK_TOPICS)
   if(own AND NOT name IN_LIST own)
     set(impl_dir "${WORKBOOK_ROOT}/solutions")
   endif()
@@ -426,15 +439,7 @@ function(workbook_contents)
 endfunction()
 
 function(workbook_chapters)
-  # WORKBOOK_TOPICS names declared topics only: a misspelt one would silently build from solutions/.
-  workbook_topic_names(own "${WORKBOOK_TOPICS}")
-  get_property(topics GLOBAL PROPERTY WORKBOOK_TOPIC_LIST)
-  foreach(t IN LISTS own)
-    if(NOT t IN_LIST topics)
-      string(REPLACE ";" " " topics "${topics}")
-      message(FATAL_ERROR "WORKBOOK_TOPICS: '${t}' is not a topic (they are: ${topics})")
-    endif()
-  endforeach()
+  workbook_topic_names(own WORKBOOK_TOPICS CHECKED)  # every topic is declared by now
   get_property(chapters GLOBAL PROPERTY WORKBOOK_CHAPTER_LIST)
   foreach(ch IN LISTS chapters)
     if(EXISTS "${WORKBOOK_ROOT}/chapters/${ch}/CMakeLists.txt")

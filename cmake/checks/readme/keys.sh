@@ -27,9 +27,10 @@ cd "$work/workbook" || fail "no scratch clone"
 if [[ $plant == --plant ]]; then
   # The front door hands CMake the topics joined by a character CMake does not split a list at.
   sed -i 's|    WORKBOOK_TOPICS="$own" configure|    WORKBOOK_TOPICS="${own//;/+}" configure|' cmake/workbook
-  sed -i 's|string(REGEX REPLACE "\[ ,;\]+" ";" names "${value}")|set(names "${value}")|' cmake/Workbook.cmake
-  sed -i 's|message(FATAL_ERROR "WORKBOOK_TOPICS: |message(STATUS "WORKBOOK_TOPICS: |' cmake/Workbook.cmake
-  grep -q 'own//;/+' cmake/workbook && grep -q 'set(names "${value}")' cmake/Workbook.cmake ||
+  sed -i 's|string(REGEX REPLACE "\[ ,;\]+" ";" names "${${variable}}")|set(names "${${variable}}")|' cmake/Workbook.cmake
+  sed -i 's|message(FATAL_ERROR "${variable}: |message(STATUS "${variable}: |' cmake/Workbook.cmake
+  grep -q 'own//;/+' cmake/workbook && grep -q 'set(names "${${variable}}")' cmake/Workbook.cmake &&
+    grep -q 'message(STATUS "${variable}: ' cmake/Workbook.cmake ||
     fail "could not plant the one-word topic list"
   echo "== Planted: the topics reach CMake as one word"
 fi

@@ -37,12 +37,6 @@ std::string read_chapters(const std::string& path, Catalog& catalog) {
     return {};
 }
 
-std::string joined(const std::vector<std::string>& names, const std::string& separator) {
-    std::string out;
-    for (const auto& n : names) out += (out.empty() ? "" : separator) + n;
-    return out;
-}
-
 // The error for a key that names nothing: every chapter, and every topic with its exercises.
 std::string unknown_key(const Catalog& catalog, const std::string& key) {
     std::string text = "'" + key + "' is not a chapter, topic or exercise.\nChapters:";
@@ -118,6 +112,12 @@ bool started(const CatalogTopic& topic, const std::string& folder) {
     bool ok = false;
     const std::string mine = support::read_file(folder + "/" + topic.name + ".cpp", &ok);
     return !ok || mine != support::read_file(topic.stub);
+}
+
+std::string joined(const std::vector<std::string>& names, const std::string& separator) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : separator) + n;
+    return out;
 }
 
 std::string cmake_list(const std::vector<std::string>& names) { return joined(names, ";"); }

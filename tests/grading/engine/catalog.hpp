@@ -56,7 +56,9 @@ std::string select_key(const Catalog& catalog, const std::string& key, KeySelect
 // committed; without git (the stub is the tree's file), always.
 bool started(const CatalogTopic& topic, const std::string& folder);
 
-// Names as one CMake list ("rotation;precession"): what CMake's list commands read as they are.
+// Names joined by a separator; as one CMake list ("rotation;precession"): what CMake's list
+// commands read as they are.
+std::string joined(const std::vector<std::string>& names, const std::string& separator);
 std::string cmake_list(const std::vector<std::string>& names);
 
 }  // namespace grading

@@ -15,6 +15,7 @@
 //   workbook_topics exercises --catalog <file>
 //       "<topic>\t<exercise>" per line: what the stubs as committed name (a test compares the manifest)
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -61,9 +62,7 @@ int check_started(const Catalog& catalog, const Command& c) {
         return 1;
     }
     if (!untouched.empty()) {
-        std::string names;
-        for (const auto& n : untouched) names += (names.empty() ? "" : " ") + n;
-        std::printf("Not started (still the stub as committed, not graded): %s\n", names.c_str());
+        std::printf("Not started (still the stub as committed, not graded): %s\n", joined(untouched, " ").c_str());
     }
     return answer(c, cmake_list(own)) ? 0 : 2;
 }
@@ -80,9 +79,9 @@ int scenes(const Catalog& catalog, const Command& c) {
     if (c.keys.size() != 1) return fail("usage: cmake/workbook scenes <chapter>");
     const CatalogChapter* chapter = chapter_of_key(catalog, c.keys[0]);
     if (!chapter) {
-        std::string known;
-        for (const auto& ch : catalog.chapters) known += (known.empty() ? "" : " ") + std::to_string(ch.number);
-        return fail("'" + c.keys[0] + "' is not a chapter (" + known + ")");
+        std::vector<std::string> known;
+        for (const auto& ch : catalog.chapters) known.push_back(std::to_string(ch.number));
+        return fail("'" + c.keys[0] + "' is not a chapter (" + joined(known, " ") + ")");
     }
     std::vector<std::string> own;
     for (const auto& t : catalog.topics)
@@ -90,27 +89,20 @@ int scenes(const Catalog& catalog, const Command& c) {
     if (own.empty()) {
         std::printf("\033[1m== No exercises/*.cpp started yet: the scenes run on the reference solutions\033[0m\n");
     } else {
-        std::string names;
-        for (const auto& n : own) names += (names.empty() ? "" : " ") + n;
-        std::printf("\033[1m== Your code: %s (exercises/); the rest from solutions/\033[0m\n", names.c_str());
+        std::printf("\033[1m== Your code: %s (exercises/); the rest from solutions/\033[0m\n",
+                    joined(own, " ").c_str());
     }
     const std::string nn = (chapter->number < 10 ? "0" : "") + std::to_string(chapter->number);
     return answer(c, nn + "\t" + chapter->folder + "\t" + cmake_list(own)) ? 0 : 2;
 }
 
 int topics(const Catalog& catalog, const Command& c) {
-    std::vector<std::string> names;
-    std::string known;
-    for (const auto& t : catalog.topics) known += (known.empty() ? "" : " ") + t.name;
-    for (const auto& key : c.keys) {
-        bool found = false;
-        for (const auto& t : catalog.topics) found = found || t.name == key;
-        if (!found) return fail("'" + key + "' is not a topic with graders (they are: " + known + ")");
-        names.push_back(key);
-    }
-    if (names.empty())
-        for (const auto& t : catalog.topics) names.push_back(t.name);
-    return answer(c, cmake_list(names)) ? 0 : 2;
+    std::vector<std::string> known;
+    for (const auto& t : catalog.topics) known.push_back(t.name);
+    for (const auto& key : c.keys)
+        if (std::find(known.begin(), known.end(), key) == known.end())
+            return fail("'" + key + "' is not a topic with graders (they are: " + joined(known, " ") + ")");
+    return answer(c, cmake_list(c.keys.empty() ? known : c.keys)) ? 0 : 2;
 }
 
 int exercises(const Catalog& catalog) {
