@@ -17,6 +17,37 @@ include("${CMAKE_CURRENT_LIST_DIR}/pristine_stubs.cmake")  # WORKBOOK_PRISTINE_D
 set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
 
 # ------------------------------------------------------------------------------------------
+# Every test's TIMEOUT is a hang catch, never a measurement: the value written beside a test is
+# generous for an idle 2-core machine, and at the end of each folder's CMake code every test
+# there gets WORKBOOK_HANG_FACTOR times it, so that a test that is only slow on a loaded machine
+# (a course lab, a CI box with neighbours) is never failed for it. Tests listed when CTest runs
+# (doctest's, the corners) take the factor where they are declared.
+set(WORKBOOK_HANG_FACTOR 4 CACHE STRING "Each test's TIMEOUT is this many times the value beside it (a hang catch)")
+if(NOT WORKBOOK_HANG_FACTOR MATCHES "^[1-9][0-9]*$")
+  message(FATAL_ERROR "WORKBOOK_HANG_FACTOR is '${WORKBOOK_HANG_FACTOR}': it must be a whole number, 1 or more")
+endif()
+function(_workbook_scale_timeouts)
+  get_directory_property(tests TESTS)
+  foreach(test IN LISTS tests)
+    get_test_property("${test}" TIMEOUT seconds)
+    if(seconds)
+      math(EXPR seconds "${seconds} * ${WORKBOOK_HANG_FACTOR}")
+      set_tests_properties("${test}" PROPERTIES TIMEOUT ${seconds})
+    endif()
+  endforeach()
+endfunction()
+# Schedules the scaling for the end of the current folder, once.
+macro(workbook_hang_catch)
+  get_directory_property(_workbook_hang_scheduled WORKBOOK_HANG_SCHEDULED)
+  if(NOT _workbook_hang_scheduled)
+    set_directory_properties(PROPERTIES WORKBOOK_HANG_SCHEDULED ON)
+    cmake_language(DEFER CALL _workbook_scale_timeouts)
+  endif()
+endmacro()
+# The hang catch of a test that doctest lists when CTest runs (each is one test case).
+math(EXPR WORKBOOK_CASE_TIMEOUT "120 * ${WORKBOOK_HANG_FACTOR}")
+
+# ------------------------------------------------------------------------------------------
 # Dependencies: each missing piece stops the configure step with the Debian package to install.
 macro(workbook_missing what package)
   message(FATAL_ERROR
@@ -210,7 +241,8 @@ function(workbook_unit_test name)
   target_link_libraries(test_${name} PRIVATE workbook_doctest_main rigid_${name} doctest::doctest)
   set_target_properties(test_${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
   workbook_warnings(test_${name})
-  doctest_discover_tests(test_${name} TEST_PREFIX "provided: " PROPERTIES LABELS "provided" TIMEOUT 120)
+  doctest_discover_tests(test_${name} TEST_PREFIX "provided: " PROPERTIES LABELS "provided"
+                                                                       TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 endfunction()
 
 # ------------------------------------------------------------------------------------------
@@ -243,8 +275,10 @@ function(workbook_grader topic)
     set_target_properties(${exe} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/graders")
     workbook_warnings(${exe})
   endforeach()
+  # One label: doctest's script splits a list of labels into words, and "LABELS grader ch01 TIMEOUT
+  # n" then set a property named ch01 and no TIMEOUT at all (the chapter is in the name).
   doctest_discover_tests(grade_${topic} TEST_PREFIX "${G_CHAPTER}: "
-                         PROPERTIES LABELS "grader;${G_CHAPTER}" TIMEOUT 120)
+                         PROPERTIES LABELS grader TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
   if(WORKBOOK_STUB_GATE)
     if(TARGET grade_${topic}_solutions)
       set(ref grade_${topic}_solutions)
@@ -271,6 +305,7 @@ endfunction()
 # SMOKE_ARGS are added for that test only (a lighter run of a long scene, which the book never
 # quotes). The corner sweep (below) starts from CORNER_ARGS when given, else from SMOKE_ARGS.
 function(workbook_scene name)
+  workbook_hang_catch()
   cmake_parse_arguments(S "FIGURES" "" "TOPICS;LIBS;ARGS;SMOKE_ARGS;CORNER_ARGS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
   add_executable(${name} ${name}.cpp)
@@ -351,10 +386,10 @@ set(WORKBOOK_CORNER_BUDGET 3 CACHE STRING "The --budget (seconds) of the corner 
 function(_workbook_scene_corners name chapter base)
   set(dir "${CMAKE_BINARY_DIR}/corners")
   set(list_file "${dir}/${name}.cmake")
-  math(EXPR timeout "10 * ${WORKBOOK_CORNER_BUDGET} + 90")
+  math(EXPR timeout "(10 * ${WORKBOOK_CORNER_BUDGET} + 90) * ${WORKBOOK_HANG_FACTOR}")
   add_custom_command(TARGET ${name} POST_BUILD
     COMMAND ${CMAKE_COMMAND} -DSCENE=$<TARGET_FILE:${name}> -DNAME=${name} -DCHAPTER=${chapter} "-DBASE=${base}"
-            -DBUDGET=${WORKBOOK_CORNER_BUDGET} -DTIMEOUT=${timeout} -DOUT=${list_file} -DWORK=${dir}/runs
+            -DBUDGET=${WORKBOOK_CORNER_BUDGET} -DTIMEOUT=${timeout} -DHANG=${WORKBOOK_HANG_FACTOR} -DOUT=${list_file} -DWORK=${dir}/runs
             -DCHECK=${WORKBOOK_ROOT}/cmake/corner_check.cmake -P ${WORKBOOK_ROOT}/cmake/corner_list.cmake
     VERBATIM)
   # CTest reads the list when it runs; before the scene is built there is none, and one test says so.
@@ -370,6 +405,7 @@ endfunction()
 #
 #   workbook_scene_rejects(<scene> <label> MESSAGE <regex> ARGS <arg>...)
 function(workbook_scene_rejects scene label)
+  workbook_hang_catch()
   cmake_parse_arguments(R "" "MESSAGE" "ARGS" ${ARGN})
   set(out "${CMAKE_BINARY_DIR}/smoke/${scene}-rejects-${label}")
   set(args "")
@@ -394,6 +430,7 @@ endfunction()
 #   workbook_scene_case(<scene> <label> [KIND <kind> LABELS <label>...] ARGS <arg>...
 #                       [EXPECT <key>=<regex>|<key><=<number>|<key>>=<number>...])
 function(workbook_scene_case scene label)
+  workbook_hang_catch()
   cmake_parse_arguments(C "" "KIND" "ARGS;EXPECT;LABELS" ${ARGN})
   get_filename_component(chapter "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
   set(kind corner)

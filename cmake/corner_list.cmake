@@ -5,6 +5,9 @@
 # typo'd option, which the scene must refuse at the start, naming the options it has.
 #   -DSCENE=<exe> -DNAME=<scene> -DCHAPTER=<NN_slug> -DBASE=<arg>|<arg>... -DBUDGET=<seconds>
 #   -DOUT=<file.cmake> -DWORK=<folder> -DCHECK=<corner_check.cmake>
+if(NOT HANG)  # WORKBOOK_HANG_FACTOR: each test's TIMEOUT is a hang catch
+  set(HANG 1)
+endif()
 execute_process(COMMAND "${SCENE}" --list-options RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
 if(NOT rc STREQUAL "0")
   message(FATAL_ERROR "${NAME} --list-options: exit status ${rc}\n${err}")
@@ -28,7 +31,7 @@ if(n GREATER 0)
       set(args "${BASE}|--${opt}|${v}")
       string(APPEND lines
         "add_test(\"${test}\" \"${CMAKE_COMMAND}\" \"-DCOMMAND=${SCENE}|--no-figure|--json|--budget|${BUDGET}|--out|${WORK}/${NAME}-${opt}-${end}${args}\" "
-        "-DBUDGET=${BUDGET} \"-DOPTION=--${opt}\" -P \"${CHECK}\")\n"
+        "-DBUDGET=${BUDGET} -DHANG=${HANG} \"-DOPTION=--${opt}\" -P \"${CHECK}\")\n"
         "set_tests_properties(\"${test}\" PROPERTIES LABELS \"corner;${CHAPTER}\" TIMEOUT ${TIMEOUT})\n")
     endforeach()
   endforeach()
@@ -59,8 +62,9 @@ endif()
 string(APPEND message ".*--help")
 get_filename_component(kit_dir "${CHECK}" DIRECTORY)
 set(test "typo: ${NAME} --${typo}")
+math(EXPR typo_timeout "60 * ${HANG}")  # a hang catch (WORKBOOK_HANG_FACTOR)
 string(APPEND lines
   "add_test(\"${test}\" \"${CMAKE_COMMAND}\" -DEXPECT=2 \"-DMESSAGE=${message}\" -DOUT=${WORK}/${NAME}-typo "
   "\"-DCOMMAND=${SCENE}|--no-figure|--out|${WORK}/${NAME}-typo${BASE}|--${typo}|1\" -P \"${kit_dir}/scene_check.cmake\")\n"
-  "set_tests_properties(\"${test}\" PROPERTIES LABELS \"scene;bad-input;${CHAPTER}\" TIMEOUT 60)\n")
+  "set_tests_properties(\"${test}\" PROPERTIES LABELS \"scene;bad-input;${CHAPTER}\" TIMEOUT ${typo_timeout})\n")
 file(WRITE "${OUT}" "${lines}")

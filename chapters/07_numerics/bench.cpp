@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -312,6 +313,15 @@ Budget budget(const std::string& name) {
     throw std::invalid_argument("unknown budget " + name);
 }
 
+double seconds_per_evaluation(const std::string& method) {
+    static const std::map<std::string, double> ns = {
+        {"rk4", 98},    {"rkf45", 46},  {"rk8pd", 47},   {"msadams", 187},  {"rk4imp", 781},  {"bsimp", 350},
+        {"msbdf", 351}, {"rkmk4", 125}, {"strang", 290}, {"yoshida4", 296}, {"taylor16", 63}, {"rk8pd_ct", 47}};
+    const auto it = ns.find(method);
+    if (it == ns.end()) throw std::invalid_argument("no cost of an evaluation is known for the method " + method);
+    return it->second * 1e-9;
+}
+
 // snippet: sweep
 std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference& ref, const Budget& b,
                          const std::function<void(const std::string&)>& progress) {
@@ -326,7 +336,8 @@ std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference
     // steps whatever the tolerance, one or two per output interval).
     double best_error = std::numeric_limits<double>::infinity();
     int stalled = 0, failures = 0;
-    double spent = 0;
+    double spent = 0;  // the costs of the runs so far (not their times: the load must not matter)
+    const double cost = seconds_per_evaluation(meth.name);
     for (;; param /= meth.kind == Kind::tolerance ? b.tol_factor : b.step_factor) {
         if (meth.kind == Kind::tolerance && param < 0.99e-14) break;
         if (meth.kind == Kind::step && sc.T / param > static_cast<double>(b.max_steps)) break;
@@ -337,19 +348,18 @@ std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference
         p.scenario = sc.name, p.method = meth.name, p.param = param;
         try {
             long evaluations = 0;
-            double first = 0;
             p.time_s = kit::min_time([&] { evaluations = meth.run(sc, times, param, out); }, 1);
-            first = p.time_s;
+            const double first = cost * static_cast<double>(evaluations);  // its cost, not its time
             p.repeats = 1;
             // More repetitions for short runs, whose minimum is the most easily disturbed.
             const int repeats = first < 5e-3 && b.repeats > 1 ? std::max(b.repeats, 10) : b.repeats;
             if (first < b.max_run_s && repeats > 1) {
-                p.time_s =
-                    std::min(first, kit::min_time([&] { evaluations = meth.run(sc, times, param, out); }, repeats - 1));
+                p.time_s = std::min(p.time_s,
+                                    kit::min_time([&] { evaluations = meth.run(sc, times, param, out); }, repeats - 1));
                 p.repeats = repeats;
             }
             p.evaluations = evaluations;
-            spent += first + (p.repeats - 1) * p.time_s;
+            spent += first * p.repeats;
             p.m = measure(sc, ref.states, out);
             if (!std::isfinite(p.m.error)) throw std::runtime_error("the solution is not finite");
             points.push_back(p);

@@ -94,18 +94,25 @@ struct Reference {
 Reference reference(const Scenario& sc, bool self_check, bool conditioning = true);
 // end snippet
 
-// How much work a sweep may do.
+// How much work a sweep may do. Work, not seconds: a run's cost is its evaluations times the
+// method's cost of one (seconds_per_evaluation, a constant), so that the same points are run,
+// and the same slopes fitted, on an idle machine and on a loaded one; only the run times differ.
 struct Budget {
     std::string name;
     int repeats;         // timing repetitions (the minimum is kept)
-    double max_run_s;    // a method's sweep stops after a run longer than this
-    double max_sweep_s;  // or when its runs, repetitions included, have taken longer than this
+    double max_run_s;    // a method's sweep stops after a run whose cost is over this
+    double max_sweep_s;  // or when the costs of its runs, repetitions included, add up to more than this
     long max_steps;      // fixed-step sweeps stop before more steps than this
     double step_factor;  // ratio of consecutive steps h
     double tol_factor;   // ratio of consecutive tolerances
     bool self_check;     // run the reference again at h/2
 };
 Budget budget(const std::string& name);  // "smoke", "quick" or "full"
+
+// The cost of one evaluation of the right-hand side by a method (for the Taylor method: one
+// sixteenth of a step), in seconds: the median over the quick sweep's runs longer than 2 ms,
+// measured on one core of the 2-core machine, idle. The sweep's stopping rule, never a result.
+double seconds_per_evaluation(const std::string& method);
 
 // One point of a work-precision diagram.
 struct Point {
@@ -120,9 +127,9 @@ struct Point {
 };
 
 // The sweep of one method on one scenario: parameters from loose to tight, each run timed
-// (minimum over budget.repeats; at least 10 for runs under 5 ms unless the budget asks for 1),
-// stopped by the budget or when the error has not improved for two points in a row (the
-// round-off floor). progress() is called before each run.
+// (minimum over budget.repeats; at least 10 for runs that cost under 5 ms unless the budget asks
+// for 1), stopped by the budget (on the runs' costs, not their times) or when the error has not
+// improved for two points in a row (the round-off floor). progress() is called before each run.
 std::vector<Point> sweep(const Scenario& sc, const Method& meth, const Reference& ref, const Budget& b,
                          const std::function<void(const std::string&)>& progress);
 

@@ -359,6 +359,8 @@ void report_slopes(kit::Scene& scene, const Sweeps& w) {
             // Too few runs in that band (a light sweep): the keys are still there, not measured.
             const bool few = lt.size() < 3;
             const std::string k = sc.name + "_" + m.name + "_slope_";
+            scene.report.add(k + "points", double(lt.size()),
+                             "the runs in that band: under 3 and the two slopes are not measured (null)");
             scene.report.add(k + "time", few ? nan_ : fit(lt, le),
                              "d log10(error) / d log10(run time), errors in (1e3 floor, 1e-3)");
             scene.report.add(k + "evaluations", few ? nan_ : fit(ls, le),

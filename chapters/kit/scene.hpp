@@ -226,8 +226,9 @@ struct CheckFailed : std::runtime_error {
 // Parses options, runs the body, prints the report, maps failures to exit statuses:
 // 0 success; 2 bad input (BadInput or std::invalid_argument, a request over the budget);
 // 1 numerical failure, a failed check, an exercise not written yet, or any other error.
-// Never leaves a partial figure behind. A watchdog stops a scene that runs past three times
-// its budget plus 10 s (its estimate was wrong): exit status 1, with a message.
+// Never leaves a partial figure behind. A watchdog stops a scene that uses more processor time
+// than three times its budget plus 10 s (its estimate was wrong), or that is still running
+// after ten times that in wall time (it waits forever): exit status 1, with a message.
 int run(int argc, char** argv, Options& opts, const std::function<void(const Options&, Scene&)>& body);
 
 // The smallest wall time of `repeats` calls of f, in seconds: the least-disturbed measurement.

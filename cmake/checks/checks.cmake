@@ -4,6 +4,7 @@
 #   format_check.cmake   every C++ source laid out as .clang-format says
 #   include_check.cmake  what a scene, a grader and the grading engine may include
 #   readme/              the front doors: every command the pages tell a user to type, run as written
+#   load/                the same answers on a busy machine: doors run idle and beside CPU hogs
 #   margins.sh           (a maintainer's tool, no test) the graders' margins on the reference solutions
 # Included by cmake/Workbook.cmake; each workbook_*() below is called once, after every target.
 include_guard(GLOBAL)
@@ -108,4 +109,24 @@ endfunction()
 # contributors' page and the chapters' "Check your work", run as written in a scratch clone.
 function(workbook_door_tests)
   add_subdirectory("${CMAKE_CURRENT_FUNCTION_LIST_DIR}/readme" "${CMAKE_BINARY_DIR}/checks/readme")
+endfunction()
+
+# ------------------------------------------------------------------------------------------
+# The same answers on a busy machine (load/): a small class graded, a student's check of the
+# chapter with the heaviest grader and the default run of the sweep scenes, once as the machine
+# is and once beside four CPU hogs that the test starts and kills itself; everything but run
+# times must be the same. Its self-test plants a sweep that stops on seconds, and must fail.
+function(workbook_load_test)
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
+  set(script "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/load/load.py")
+  set(check "load: a class graded, a check and the sweep scenes give the same answers beside four CPU hogs")
+  set(selftest "load: the load test flags a sweep that stops on seconds")
+  add_test(NAME "${check}" COMMAND ${Python3_EXECUTABLE} "${script}" --build "${CMAKE_BINARY_DIR}"
+                                   --root "${WORKBOOK_ROOT}" --work "${CMAKE_BINARY_DIR}/test/load")
+  add_test(NAME "${selftest}" COMMAND ${Python3_EXECUTABLE} "${script}" --build "${CMAKE_BINARY_DIR}"
+                                      --root "${WORKBOOK_ROOT}" --work "${CMAKE_BINARY_DIR}/test/load-planted"
+                                      --plant --only-planted)
+  set_tests_properties("${selftest}" PROPERTIES PASS_REGULAR_EXPRESSION
+                       "FAILED: the load changed more than run times:.*planted wall-clock sweep: 1 differences")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS "load;grading" TIMEOUT 1200 PROCESSORS 2)
 endfunction()

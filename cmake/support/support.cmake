@@ -18,7 +18,7 @@ function(workbook_support)
   add_executable(support_test "${dir}/support_test.cpp")
   target_link_libraries(support_test PRIVATE workbook_support doctest::doctest)
   workbook_warnings(support_test)
-  doctest_discover_tests(support_test TEST_PREFIX "support: " PROPERTIES LABELS grading TIMEOUT 60)
+  doctest_discover_tests(support_test TEST_PREFIX "support: " PROPERTIES LABELS grading TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 endfunction()
 
 # ------------------------------------------------------------------------------------------

@@ -503,7 +503,7 @@ function(_grading_tests)
   target_include_directories(grading_json_test PRIVATE "${WORKBOOK_ROOT}/cmake/book/tools")  # prose.hpp: the book's JSON, read back
   target_link_libraries(grading_json_test PRIVATE workbook_grading workbook_doctest_main doctest::doctest)
   workbook_warnings(grading_json_test)
-  doctest_discover_tests(grading_json_test TEST_PREFIX "grading: " PROPERTIES LABELS grading TIMEOUT 60)
+  doctest_discover_tests(grading_json_test TEST_PREFIX "grading: " PROPERTIES LABELS grading TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 
   # A test that fails by an exception names the other exercises it uses (ALSO_USES), as a failed
   # check does: the reporter's self-test plants one.
@@ -549,7 +549,7 @@ function(_grading_tests)
   target_link_libraries(grading_item_analysis_test PRIVATE workbook_grading workbook_doctest_main doctest::doctest)
   workbook_warnings(grading_item_analysis_test)
   target_compile_options(grading_item_analysis_test PRIVATE -O1)
-  doctest_discover_tests(grading_item_analysis_test TEST_PREFIX "grading: " PROPERTIES LABELS grading TIMEOUT 60)
+  doctest_discover_tests(grading_item_analysis_test TEST_PREFIX "grading: " PROPERTIES LABELS grading TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 
   # A class run writes the item analysis of every test of every graded topic, with the numbers an
   # independent count from the results files gives (item_check.py), the same provenance in every
@@ -613,7 +613,7 @@ function(_grading_tests)
   target_compile_options(grading_mistakes_test PRIVATE -O1)
   workbook_warnings(grading_mistakes_test)
   doctest_discover_tests(grading_mistakes_test TEST_PREFIX "grading: " WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
-                         PROPERTIES LABELS grading TIMEOUT 60)
+                         PROPERTIES LABELS grading TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 endfunction()
 
 # ------------------------------------------------------------------------------------------

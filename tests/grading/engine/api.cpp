@@ -76,7 +76,7 @@ std::string run_nm(const std::string& nm, const std::vector<std::string>& args, 
     std::vector<std::string> argv = {nm, "-P"};
     argv.insert(argv.end(), args.begin(), args.end());
     Limits limits;
-    limits.wall_seconds = 120;
+    limits.cpu_seconds = 120, limits.wall_seconds = 1200;
     limits.memory_mb = 4096;
     limits.output_bytes = 256L << 20;
     limits.forbid_processes = false;

@@ -5,11 +5,13 @@
 // verdict comes from the judge, which never runs student code, and from how the student's
 // process ended; never from anything the student's code prints or reports.
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -29,6 +31,57 @@ std::string indent(const std::string& text, const std::string& prefix) {
     std::string out;
     for (const auto& line : split(text, '\n')) out += prefix + line + "\n";
     return out;
+}
+
+// Turns on the machine. Every compile, link and test of a run holds a shared lock on the
+// stage's alone.lock while it runs; one that is run again alone holds it exclusively, so that no
+// other compile or test of this run (of any worker) runs beside it. The lock file is the
+// harness's own (mode 0600, in the stage, which no sandbox binds).
+class Turn {
+public:
+    Turn(const Stage& stage, bool alone) {
+        if (stage.dir.empty()) return;
+        fd_ = open((stage.dir + "/alone.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+        if (fd_ >= 0)
+            while (flock(fd_, alone ? LOCK_EX : LOCK_SH) != 0 && errno == EINTR) {
+            }
+    }
+    ~Turn() {
+        if (fd_ >= 0) close(fd_);
+    }
+    Turn(const Turn&) = delete;
+    Turn& operator=(const Turn&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// Stopped by the wall-clock backstop before it used its processor time: starved by other work
+// (a loaded machine), or waiting for something that never comes. Either way it is run again,
+// alone, before anything is concluded from it.
+bool starved(const Outcome& o) { return o.started && o.timed_out && !o.out_of_cpu; }
+
+// Runs `run` in its turn, and once more alone when it was starved.
+template <class Run>
+Outcome in_turn(const Stage& stage, Run run) {
+    Outcome o;
+    {
+        const Turn shared(stage, false);
+        o = run();
+    }
+    if (!starved(o)) return o;
+    const Turn alone(stage, true);
+    o = run();
+    o.ran_alone = true;
+    return o;
+}
+
+// Processor time in a verdict, to a tenth of a second: a message must not change with the load,
+// and the time a process that waits forever used is 0.0 s, idle or not.
+std::string seconds_text(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", std::floor(s * 10) / 10);
+    return text;
 }
 
 // What the judge's reporter said about one test case (reporter.cpp, JSON lines).
@@ -99,8 +152,13 @@ std::string first_error(const std::string& log) {
 
 std::string build_problem(const Outcome& o, const std::string& what, const std::string& log, const Limits& limits) {
     if (!o.started) return "could not run the " + what + ": " + o.error;
-    if (o.timed_out || o.signal == SIGXCPU)
-        return "the " + what + " took longer than " + format_number(limits.wall_seconds) + " s and was stopped";
+    if (o.out_of_cpu)
+        return "the " + what + " used all of its budget of " + format_number(limits.cpu_seconds) +
+               " s of processor time (--build-timeout) and was stopped";
+    if (o.timed_out)
+        return "the " + what + " did not end within the wall-clock backstop of " + format_number(limits.wall_seconds) +
+               " s (" + (o.ran_alone ? "twice, the second time alone; " : "") + "it used " +
+               seconds_text(o.cpu_seconds) + " s of processor time) and was stopped";
     const std::string error = first_error(log);
     if (!error.empty()) return error;
     if (o.signal)
@@ -147,17 +205,27 @@ struct Run {
     bool not_started = false;
 };
 
-// How the student's process ended, when that decides the verdict: it did not start, timed out,
-// was killed by a signal. Empty otherwise.
-Run student_end(const Outcome& o, const Options& options) {
-    const double limit = options.test_limits.wall_seconds;
+// The messages of the two budgets of a test (Limits): its processor time, and the wall-clock
+// backstop, which only a process that waits forever reaches (one starved by a loaded machine is
+// run again alone first: run_test).
+std::string out_of_cpu_message(const std::string& who, const Limits& limits) {
+    return who + " used all of its budget of " + format_number(limits.cpu_seconds) +
+           " s of processor time (--timeout) and was stopped: an endless loop, or far too much work?";
+}
+std::string backstop_message(const Outcome& student, const Limits& limits, bool alone) {
+    return "did not end within the wall-clock backstop of " + format_number(limits.wall_seconds) + " s (" +
+           (alone ? "twice, the second time alone" : "once") + ") and was stopped, having used only " +
+           seconds_text(student.cpu_seconds) + " s of its " + format_number(limits.cpu_seconds) +
+           " s of processor time: does it wait for something that never comes (a sleep, a blocking read)?";
+}
+
+// How the student's process ended, when that decides the verdict: it did not start, ran out of
+// a budget, was killed by a signal. Empty otherwise.
+Run student_end(const Outcome& o, const Options& options, const Limits& limits, bool alone) {
     if (!o.started) return {Verdict::crash, "could not start the test: " + o.error};
     if (o.stopped) return {};  // killed by the harness once the judge was done: decide() says so
-    if (o.timed_out)
-        return {Verdict::timeout, "timed out after " + format_number(limit) +
-                                      " s and was stopped: an endless loop, or far too much work?"};
-    if (o.signal == SIGXCPU)
-        return {Verdict::timeout, "used more than " + format_number(limit) + " s of processor time and was stopped"};
+    if (o.out_of_cpu) return {Verdict::timeout, out_of_cpu_message("it", limits)};
+    if (o.timed_out) return {Verdict::timeout, backstop_message(o, limits, alone)};
     if (o.signal == SIGXFSZ)
         return {Verdict::crash, "output limit exceeded: the test wrote more than " +
                                     std::to_string(options.test_limits.output_bytes) +
@@ -181,14 +249,13 @@ std::string failure_message(const Said& said) {
 // then from the judge, whose reporter says whether the grader's test case passed. Nothing the
 // student's process printed or wrote counts.
 Run decide(const Setup& setup, const Outcome& student, const Outcome& judged, const std::string& verdict_lines,
-           const Test& test, const Options& options) {
-    if (Run r = student_end(student, options); r.verdict) return r;
+           const Test& test, const Options& options, const Limits& limits, bool alone) {
+    if (Run r = student_end(student, options, limits, alone); r.verdict) return r;
     const std::string status = student.stopped ? "did not end when the test was over"
                                                : "exited with status " + std::to_string(student.exit_code);
     if (!judged.started) return {Verdict::fail, "could not run the judge: " + judged.error};
-    if (judged.timed_out)
-        return {Verdict::timeout, "timed out after " + format_number(options.test_limits.wall_seconds) +
-                                      " s and was stopped: an endless loop, or far too much work?"};
+    if (judged.out_of_cpu) return {Verdict::timeout, out_of_cpu_message("the test's checks", limits)};
+    if (judged.timed_out) return {Verdict::timeout, backstop_message(student, limits, alone)};
     const Said said = read_verdict(setup, verdict_lines, test.name);
     if (judged.signal || !said.ended)
         return {Verdict::fail,
@@ -277,8 +344,9 @@ std::string fingerprint(const Setup& setup, const Options& options, const std::v
     std::ostringstream all;
     all << setup.fingerprint << "\n"
         << selection << "\n"
-        << options.test_limits.wall_seconds << " " << options.test_limits.memory_mb << " "
-        << options.test_limits.output_bytes << " " << options.test_limits.threads << " "
+        << options.test_limits.cpu_seconds << " " << options.test_limits.wall_seconds << " "
+        << options.test_limits.memory_mb << " " << options.test_limits.output_bytes << " "
+        << options.test_limits.threads << " " << options.build_limits.cpu_seconds << " "
         << options.build_limits.wall_seconds << " " << options.build_limits.memory_mb << " " << options.max_file_bytes
         << "\n";
     for (const auto& e : options.test_environment) all << "env " << e << "\n";
@@ -356,9 +424,11 @@ Outcome compile(const Grading& g, const Topic& topic, const std::string& content
         o.started = true, o.exit_code = 0;
         return o;
     }
-    const Outcome o = run_limited(fill(topic.compile, view, view.submission + "/exercises/" + topic.name + ".cpp",
-                                       view.submission + "/obj/" + topic.name + ".o"),
-                                  job, log, build_limits(g, job));
+    const Outcome o = in_turn(g.options.stage, [&] {
+        return run_limited(fill(topic.compile, view, view.submission + "/exercises/" + topic.name + ".cpp",
+                                view.submission + "/obj/" + topic.name + ".o"),
+                           job, log, build_limits(g, job));
+    });
     if (!cached.empty() && o.started && !o.timed_out && !o.signal && o.exit_code == 0) {
         make_dirs(g.options.object_cache);
         write_file(cached, read_file(object));
@@ -381,7 +451,7 @@ Outcome link(const Grading& g, const Topic& topic, const std::string& job, const
         if (!ends_with(input, ".o")) command.push_back(input);
     command.push_back("-o");
     command.push_back(view.submission + "/bin/serve_" + topic.name);
-    return run_limited(command, job, log, build_limits(g, job));
+    return in_turn(g.options.stage, [&] { return run_limited(command, job, log, build_limits(g, job)); });
 }
 
 Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& file) {
@@ -422,6 +492,17 @@ struct TestRun {
     std::string verdicts;
 };
 
+// A test's budgets: --timeout of processor time for each of its two processes, more when the
+// grader says it needs more (doctest::timeout; the heaviest, 197,511 calls of the student's
+// function, uses about 0.5 s and asks for 30 s), and a wall-clock backstop of --wall-timeout
+// or four times that, whichever is longer.
+Limits test_limits(const Options& options, const Test& test) {
+    Limits limits = options.test_limits;
+    limits.cpu_seconds = std::max(limits.cpu_seconds, test.seconds);
+    limits.wall_seconds = std::max(limits.wall_seconds, 4 * limits.cpu_seconds);
+    return limits;
+}
+
 TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary, const Test& test) {
     const std::string& work_dir = g.work_dir;
     const std::string run_dir = work_dir + "/run";
@@ -443,17 +524,13 @@ TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary
         if (shared >= 0) close(shared);
         return r;
     }
-    Limits limits = g.options.test_limits;
-    // A grader that says it needs longer (doctest::timeout) gets it: the heaviest makes 197,511
-    // calls of the student's function, a few seconds on a busy machine.
-    limits.wall_seconds = std::max(limits.wall_seconds, test.seconds);
+    Limits limits = test_limits(g.options, test);
     limits.sandbox = Sandbox::test;
     limits.environment.insert(limits.environment.end(), g.options.test_environment.begin(),
                               g.options.test_environment.end());
     Started student = start_limited({binary}, run_dir, work_dir + "/logs/output.txt", limits, {pair[0], shared});
     close(pair[0]);
-    Limits judge = g.options.test_limits;
-    judge.wall_seconds = limits.wall_seconds;
+    Limits judge = test_limits(g.options, test);
     judge.memory_mb += 512;  // the messages themselves, up to 256 MiB each
     judge.environment = {};
     if (!g.options.seed.empty()) judge.environment.push_back("WORKBOOK_SEED=" + g.options.seed);
@@ -474,17 +551,28 @@ TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary
 TestResult run_test(const Grading& g, const Topic& topic, const SubmittedFile& file, const std::string& binary,
                     const Exercise& exercise, std::size_t k) {
     const Test& test = exercise.tests[k];
-    const TestRun pair = run_pair(g, topic, binary, test);
-    Options options = g.options;  // the limit the messages name: this test's
-    options.test_limits.wall_seconds = std::max(options.test_limits.wall_seconds, test.seconds);
-    Run r = decide(g.setup, pair.student, pair.judged, pair.verdicts, test, options);
-    // The cost of the test: its wall time and its round trips between the two processes, and a
-    // hash of the inputs the judge sent (logs/<student>/timing.tsv; not in the results, which
-    // must not change from run to run).
+    TestRun pair;
+    {
+        const Turn shared(g.options.stage, false);
+        pair = run_pair(g, topic, binary, test);
+    }
+    // Stopped by the wall-clock backstop with processor time to spare: run again, alone.
+    const bool alone = starved(pair.student) || starved(pair.judged);
+    if (alone) {
+        const Turn exclusive(g.options.stage, true);
+        pair = run_pair(g, topic, binary, test);
+    }
+    Run r =
+        decide(g.setup, pair.student, pair.judged, pair.verdicts, test, g.options, test_limits(g.options, test), alone);
+    // The cost of the test (logs/<student>/timing.tsv; not in the results, which must not change
+    // from run to run): name, verdict, wall time, round trips between the two processes, a hash of
+    // the inputs the judge sent, the processor time of the student's process and of the judge,
+    // and 1 if it was run again alone.
     if (!g.log_dir.empty()) {
         const Said said = read_verdict(g.setup, pair.verdicts, test.name);
-        char line[96];
-        std::snprintf(line, sizeof line, "\t%.4f\t%llu\t%016llx\n", pair.judged.seconds, said.round_trips, said.sent);
+        char line[160];
+        std::snprintf(line, sizeof line, "\t%.4f\t%llu\t%016llx\t%.4f\t%.4f\t%d\n", pair.judged.seconds,
+                      said.round_trips, said.sent, pair.student.cpu_seconds, pair.judged.cpu_seconds, alone ? 1 : 0);
         const std::string timing = g.log_dir + "/timing.tsv";
         write_file(timing, read_file(timing) + test.name + "\t" + to_string(*r.verdict) + line);
     }

@@ -61,8 +61,13 @@ struct Bind {
     bool writable = false;
 };
 
+// A program's budget is processor time: RLIMIT_CPU, which each process counts for itself
+// (SIGXCPU at cpu_seconds, SIGKILL a second later), so that a loaded machine, which stretches
+// wall time, changes no verdict. The wall clock is only a backstop against a process that
+// sleeps or blocks forever: at wall_seconds the whole process group is killed.
 struct Limits {
-    double wall_seconds = 10;              // killed (the whole process group) after this
+    double cpu_seconds = 10;               // processor time of each process (RLIMIT_CPU)
+    double wall_seconds = 60;              // the backstop: killed (the whole process group) after this
     long memory_mb = 1024;                 // address space
     long output_bytes = 1 << 20;           // any file it writes, its output included
     bool forbid_processes = true;          // Sandbox::none: no fork, no threads (RLIMIT_NPROC 0)
@@ -94,11 +99,14 @@ unsigned sandbox_uid();
 struct Outcome {
     bool started = false;
     bool timed_out = false;
-    bool stopped = false;  // stopped by the harness at the end of its grace (wait_limited), not at its deadline
-    int signal = 0;        // the signal that ended it, 0 if it exited
-    int exit_code = -1;    // when it exited
-    double seconds = 0;
-    std::string error;  // why it could not start
+    bool stopped = false;     // stopped by the harness at the end of its grace (wait_limited), not at its deadline
+    int signal = 0;           // the signal that ended it, 0 if it exited
+    int exit_code = -1;       // when it exited
+    double seconds = 0;       // wall time
+    double cpu_seconds = 0;   // processor time, its own and that of every process it started
+    bool out_of_cpu = false;  // ended by its processor-time budget (SIGXCPU, or SIGKILL past it)
+    bool ran_alone = false;   // stopped by the backstop with processor time to spare, then run again alone
+    std::string error;        // why it could not start
 };
 
 // Runs argv[0] with stdin from /dev/null and stdout and stderr into output_path. The
@@ -215,7 +223,7 @@ std::string relative_to_root(const Setup& setup, std::string text);
 // ---- grading one submission (grade.cpp) ------------------------------------------------------
 struct Options {
     Limits test_limits;
-    Limits build_limits{120, 4096, 256L << 20, false, Sandbox::none, {}, 0, {}};
+    Limits build_limits{120, 600, 4096, 256L << 20, false, Sandbox::none, {}, 0, {}};
     long max_file_bytes = 1 << 20;
     bool keep_work = false;
     // The mutation gate's (tests/grading/mutants/): NAME=VALUE pairs added to each test's

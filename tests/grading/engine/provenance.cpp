@@ -6,10 +6,12 @@ namespace grading {
 namespace {
 
 nlohmann::ordered_json limits(const Options& o) {
-    return {{"test_wall_seconds", o.test_limits.wall_seconds},
+    return {{"test_cpu_seconds", o.test_limits.cpu_seconds},
+            {"test_wall_seconds", o.test_limits.wall_seconds},
             {"test_memory_mb", o.test_limits.memory_mb},
             {"test_output_bytes", o.test_limits.output_bytes},
             {"test_threads", o.test_limits.threads},
+            {"build_cpu_seconds", o.build_limits.cpu_seconds},
             {"build_wall_seconds", o.build_limits.wall_seconds},
             {"build_memory_mb", o.build_limits.memory_mb},
             {"max_file_bytes", o.max_file_bytes},

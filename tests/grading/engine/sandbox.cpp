@@ -1,6 +1,8 @@
-// Running a program under limits: its own process group, a wall-clock deadline that kills the
-// whole group, rlimits on address space, CPU, file size, core files and (for tests) process
-// count, stdin from /dev/null, stdout and stderr into a file. Linux (Debian 12).
+// Running a program under limits: its own process group, rlimits on processor time (the
+// budget), address space, file size, core files and (for tests) process count, a wall-clock
+// backstop that kills the whole group, stdin from /dev/null, stdout and stderr into a file;
+// the processor time it used, measured by the kernel. Linux (Debian 12).
+#include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
 #include <poll.h>
@@ -173,7 +175,7 @@ std::string configure_sandbox() {
         char dir[] = "/tmp/workbook-probe-XXXXXX";
         if (mkdtemp(dir)) {
             Limits probe;
-            probe.wall_seconds = 20;
+            probe.cpu_seconds = 20, probe.wall_seconds = 120;
             probe.sandbox = Sandbox::build;
             const std::string out = std::string(dir) + "/out.txt";
             const Outcome o = run_limited({"/bin/true"}, dir, out, probe);
@@ -250,7 +252,7 @@ std::string prepare_launch(const std::vector<std::string>& argv, const std::stri
     l.environment.insert(l.environment.end(), limits.environment.begin(), limits.environment.end());
     for (auto& e : l.environment) l.env.push_back(e.data());
     l.env.push_back(nullptr);
-    l.cpu = static_cast<rlim_t>(std::ceil(limits.wall_seconds)) + 1;
+    l.cpu = static_cast<rlim_t>(std::max(1.0, std::ceil(limits.cpu_seconds)));
     l.memory = static_cast<rlim_t>(limits.memory_mb) << 20;
     // Threads count as processes. With a user of its own, the limit counts this program alone:
     // its main thread, the threads it may start, and bubblewrap's two processes.
@@ -356,23 +358,78 @@ struct ReportReader {
     }
 };
 
+// The processor time of a process and of every process below it, from /proc (their own time
+// and that of the children they have waited for), in seconds: what a process tree killed at the
+// backstop had used, since the kernel does not count a killed subtree's time towards the
+// harness. Processes of other users are readable in /proc/<pid>/stat as well.
+double tree_cpu_seconds(pid_t root) {
+    std::vector<std::pair<pid_t, pid_t>> parent;  // (pid, parent's pid)
+    std::vector<std::pair<pid_t, double>> ticks;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* e = readdir(proc)) {
+        char* end = nullptr;
+        const long pid = std::strtol(e->d_name, &end, 10);
+        if (pid <= 0 || *end) continue;
+        char path[64], text[1024];
+        std::snprintf(path, sizeof path, "/proc/%ld/stat", pid);
+        const int fd = open(path, O_RDONLY | O_CLOEXEC);
+        if (fd < 0) continue;
+        const ssize_t n = read(fd, text, sizeof text - 1);
+        close(fd);
+        if (n <= 0) continue;
+        text[n] = 0;
+        const char* close_paren = std::strrchr(text, ')');  // the name may hold spaces and parentheses
+        if (!close_paren) continue;
+        // After the name: state ppid pgrp session tty tpgid flags minflt cminflt majflt cmajflt
+        // utime stime cutime cstime (fields 3 to 17 of proc(5)).
+        char state = 0;
+        long ppid = 0, skip = 0;
+        unsigned long long ut = 0, st = 0;
+        long long cut = 0, cst = 0;
+        if (std::sscanf(close_paren + 1, " %c %ld %ld %ld %ld %ld %ld %ld %ld %ld %ld %llu %llu %lld %lld", &state,
+                        &ppid, &skip, &skip, &skip, &skip, &skip, &skip, &skip, &skip, &skip, &ut, &st, &cut,
+                        &cst) != 15)
+            continue;
+        parent.emplace_back(static_cast<pid_t>(pid), static_cast<pid_t>(ppid));
+        ticks.emplace_back(static_cast<pid_t>(pid), static_cast<double>(ut + st) + static_cast<double>(cut + cst));
+    }
+    closedir(proc);
+    std::vector<pid_t> tree = {root};
+    for (std::size_t k = 0; k < tree.size(); ++k)
+        for (const auto& [pid, ppid] : parent)
+            if (ppid == tree[k] && std::find(tree.begin(), tree.end(), pid) == tree.end()) tree.push_back(pid);
+    double sum = 0;
+    for (const auto& [pid, t] : ticks)
+        if (std::find(tree.begin(), tree.end(), pid) != tree.end()) sum += t;
+    return sum / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+double seconds_of(const rusage& u) {
+    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 // Waits for the child until `deadline` (then kills its group), reading its report meanwhile.
-// Returns its wait status; sets *timed_out.
+// Returns its wait status; sets *timed_out, and *cpu to the processor time it used.
 template <class Deadline>
-int wait_until(pid_t pid, Deadline deadline, const ReportReader& report, bool* timed_out) {
+int wait_until(pid_t pid, Deadline deadline, const ReportReader& report, bool* timed_out, double* cpu) {
     int status = 0;
+    rusage used{};
     auto pause = std::chrono::microseconds(200);
     for (;;) {
-        const pid_t done = waitpid(pid, &status, WNOHANG);
+        const pid_t done = wait4(pid, &status, WNOHANG, &used);
         if (done == pid) break;
         if (done < 0 && errno != EINTR) break;
         if (std::chrono::steady_clock::now() >= deadline) {
             *timed_out = true;
+            const double before = tree_cpu_seconds(pid);
             kill(-pid, SIGKILL);
             kill(pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            while (wait4(pid, &status, 0, &used) < 0 && errno == EINTR) {
             }
-            break;
+            *cpu = std::max(before, seconds_of(used));
+            return status;
         }
         if (report.text) {
             pollfd p{report.fd, POLLIN, 0};
@@ -383,6 +440,7 @@ int wait_until(pid_t pid, Deadline deadline, const ReportReader& report, bool* t
         }
         pause = std::min(pause * 2, std::chrono::microseconds(10000));
     }
+    *cpu = seconds_of(used);
     return status;
 }
 
@@ -463,7 +521,8 @@ Outcome wait_limited(Started& s, double grace_seconds) {
     if (grace_seconds >= 0)
         deadline = std::min(deadline, std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_seconds));
     bool stopped = false;
-    const int status = wait_until(r.pid, deadline, r.report, &stopped);
+    double cpu = 0;
+    const int status = wait_until(r.pid, deadline, r.report, &stopped, &cpu);
     // Stopped at its own deadline, it timed out; at the end of its grace, it was only stopped.
     const bool own_deadline =
         std::chrono::steady_clock::now() >= r.start + std::chrono::duration<double>(r.wall_seconds);
@@ -476,12 +535,16 @@ Outcome wait_limited(Started& s, double grace_seconds) {
         close(r.pipes.channel[0]);
     }
     s.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    s.outcome.cpu_seconds = cpu;
     r.pid = -1;
     if (r.exec_failed) {
         s.outcome.error = "cannot run " + r.launch.command[0] + ": " + std::strerror(r.exec_errno);
         return s.outcome;
     }
     record_end(status, r.launch.namespaces, s.outcome);
+    // Past its processor time: SIGXCPU at the budget, or SIGKILL a second later if it ignored that.
+    s.outcome.out_of_cpu = s.outcome.signal == SIGXCPU ||
+                           (s.outcome.signal == SIGKILL && !stopped && cpu >= static_cast<double>(r.launch.cpu));
     return s.outcome;
 }
 

@@ -176,7 +176,7 @@ std::string read_contents(const std::string& contents, const std::string& topics
 std::string list_exercises(const Listed& t, const std::string& root, const std::string& work,
                            std::vector<Exercise>& exercises) {
     Limits limits;
-    limits.wall_seconds = 60;
+    limits.cpu_seconds = 60, limits.wall_seconds = 600;  // a hang catch: the listing takes well under 1 s
     limits.forbid_processes = false;
     const Outcome o =
         run_limited({t.reference, "--list-test-cases", "--reporters=workbook", "--no-version"}, ".", work, limits);
@@ -218,14 +218,14 @@ std::string list_exercises(const Listed& t, const std::string& root, const std::
 std::string list_private_tests(const Listed& t, const std::string& work, std::vector<Exercise>& exercises) {
     if (t.private_reference.empty()) return {};
     Limits limits;
-    limits.wall_seconds = 600;
+    limits.cpu_seconds = 600, limits.wall_seconds = 3600;
     limits.forbid_processes = false;
     const Outcome ran = run_limited({t.private_reference, "--no-version", "--no-colors"}, ".", work, limits);
     const std::string said = read_file(work);
     if (!ran.started || ran.exit_code != 0)
         return "a private test of " + t.topic + " fails on the reference solution (" + t.private_reference +
                "), so it would fail every student:\n" + first_lines(said, 4000);
-    limits.wall_seconds = 60;
+    limits.cpu_seconds = 60, limits.wall_seconds = 600;
     const Outcome o = run_limited({t.private_reference, "--list-test-cases", "--reporters=workbook", "--no-version"},
                                   ".", work, limits);
     const std::string listing = read_file(work);

@@ -56,11 +56,13 @@ const char* usage =
     "  workbook_grade manifest --topics <topics.txt> --points <points.txt> --out <manifest.txt>\n"
     "options:\n"
     "  -j <n>                 submissions graded at once (default: the number of cores)\n"
-    "  --timeout <s>          wall-clock limit of each test (default 10)\n"
+    "  --timeout <s>          processor time each process of a test may use (default 10; a grader may ask more)\n"
+    "  --wall-timeout <s>     wall-clock backstop of each test, against a process that waits forever\n"
+    "                         (default 60, or 4 times the test's processor time if longer)\n"
     "  --memory <MB>          address space of each test (default 1024)\n"
     "  --output-limit <KB>    what each test may write (default 1024)\n"
     "  --threads <n>          threads a test may start besides its main one, as root (default 16)\n"
-    "  --build-timeout <s>    limit of each compile and link (default 120)\n"
+    "  --build-timeout <s>    processor time of each compile and link (default 120; wall-clock backstop 600)\n"
     "  --build-memory <MB>    address space of the compiler (default 4096)\n"
     "  --max-file-size <KB>   largest exercise file taken from a submission (default 1024)\n"
     "  --only <name>          grade only this submission (repeat it, or join names with commas;\n"
@@ -113,11 +115,15 @@ void limit(CLI::App& app, const std::string& name, std::function<void(double)> s
 }
 
 void limit_options(CLI::App& app, Options& o) {
-    limit(app, "--timeout", [&o](double x) { o.test_limits.wall_seconds = x; });
+    limit(app, "--timeout", [&o](double x) { o.test_limits.cpu_seconds = x; });
+    limit(app, "--wall-timeout", [&o](double x) { o.test_limits.wall_seconds = x; });
     limit(app, "--memory", [&o](double x) { o.test_limits.memory_mb = static_cast<long>(x); });
     limit(app, "--output-limit", [&o](double x) { o.test_limits.output_bytes = static_cast<long>(x * 1024); });
     limit(app, "--threads", [&o](double x) { o.test_limits.threads = static_cast<int>(x); });
-    limit(app, "--build-timeout", [&o](double x) { o.build_limits.wall_seconds = x; });
+    limit(app, "--build-timeout", [&o](double x) {
+        o.build_limits.cpu_seconds = x;
+        o.build_limits.wall_seconds = std::max(600.0, 5 * x);
+    });
     limit(app, "--build-memory", [&o](double x) { o.build_limits.memory_mb = static_cast<long>(x); });
     limit(app, "--max-file-size", [&o](double x) { o.max_file_bytes = static_cast<long>(x * 1024); });
     app.add_option("--test-env", o.test_environment)

@@ -665,10 +665,11 @@ void classify(Mutant& m, const json& result, const std::map<std::string, std::st
         if (verdict == to_string(Verdict::build_error)) {
             const std::string why = t.at("output");
             // The grading run's own limits, not the mutant: the verdict would be the machine's.
-            if (why.find("took longer than") != std::string::npos || why.find("was killed by") != std::string::npos ||
-                why.find("could not run the") != std::string::npos)
+            if (why.find("of processor time, its budget") != std::string::npos ||
+                why.find("wall-clock backstop") != std::string::npos ||
+                why.find("was killed by") != std::string::npos || why.find("could not run the") != std::string::npos)
                 die("mutant " + m.id + " could not be built within the limits (" + why +
-                    "): run again on a quieter machine or with a larger --build-timeout");
+                    "): run again with a larger --build-timeout");
             build_error = true;
         }
         if (verdict != to_string(Verdict::pass) && (!m.exercise || x.at("exercise") == m.function)) {

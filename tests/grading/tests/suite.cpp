@@ -1,7 +1,7 @@
 // The grading harness's own test: bad submissions get the verdicts they deserve.
 //
 //   grading_suite --setup <build>/grading --harness <workbook_grade> --cases <folder> --work <folder>
-//                 [--count <n>] [--jobs <n>] [--timeout <s>]
+//                 [--count <n>] [--jobs <n>] [--timeout <s>] [--wall-timeout <s>]
 //
 // Builds one submission folder per recipe in tests/grading/tests/cases/ (see its README.md), or
 // <n> of them cycling through the recipes, grades them all in one parallel run of
@@ -153,9 +153,10 @@ bool same_file(const std::string& a, const std::string& b) {
 struct Args {
     std::string setup_dir, harness, cases_dir, work;
     int count = 0, jobs = 2;
-    // Each test's limit: short for the endless loops, with room for a busy machine (the heaviest
-    // grader, 197,511 calls of the student's function, asks for 30 s itself: doctest::timeout).
-    std::string timeout = "6";
+    // Each test's processor time: short for the endless loops (the heaviest grader, 197,511
+    // calls of the student's function, about 0.5 s, asks for 30 s itself: doctest::timeout),
+    // and a short wall-clock backstop for the one that sleeps (waits_forever.cpp): 12 s, twice.
+    std::string timeout = "3", wall_timeout = "12";
 };
 
 // Returns 0, or the exit status of a wrong command line.
@@ -177,12 +178,13 @@ int parse(int argc, char** argv, Args& a) {
     app.add_option("--count", a.count)->check(at_least(0));
     app.add_option("--jobs", a.jobs)->check(at_least(1));
     app.add_option("--timeout", a.timeout)->check(at_least(0.001));
+    app.add_option("--wall-timeout", a.wall_timeout)->check(at_least(0.001));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr,
                      "grading_suite: %s\nusage: grading_suite --setup <dir> --harness <exe> --cases <dir> --work <dir> "
-                     "[--count n] [--jobs n] [--timeout s]\n",
+                     "[--count n] [--jobs n] [--timeout s] [--wall-timeout s]\n",
                      e.what());
         return 2;
     }
@@ -609,8 +611,9 @@ int main(int argc, char** argv) {
     if (const auto problem = make_submissions(s); !problem.empty())
         return std::fprintf(stderr, "grading_suite: %s\n", problem.c_str()), 2;
     const std::string jobs = std::to_string(s.a.jobs), max_kb = std::to_string(Suite::max_file_kb);
-    s.run_args = {s.a.harness, "grade",    "--setup", s.a.setup_dir,     s.subs, s.out, "-j", jobs, "--timeout",
-                  s.a.timeout, "--memory", "512",     "--max-file-size", max_kb};
+    s.run_args = {s.a.harness, "grade", "--setup",         s.a.setup_dir, s.subs,           s.out,
+                  "-j",        jobs,    "--timeout",       s.a.timeout,   "--wall-timeout", s.a.wall_timeout,
+                  "--memory",  "512",   "--max-file-size", max_kb};
     const double wall = first_run(s);
     // Every result as first written, to prove below that nothing rewrote one later.
     std::map<std::string, std::string> written;

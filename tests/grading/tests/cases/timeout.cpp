@@ -1,6 +1,6 @@
 // case: an endless loop
 // replace: compose
-// expect: compose | timeout | timed out after
+// expect: compose | timeout | used all of its budget of 3 s of processor time (--timeout)
 namespace rigid {
 AxisAngle compose(const AxisAngle& first, const AxisAngle& second) {
     volatile double spin = first.angle + second.angle;
