@@ -160,8 +160,11 @@ def class_door(a, tag):
     out = a.work / f"grades-{tag}"
     if out.exists():
         shutil.rmtree(out)
+    # A budget of 5 s of processor time per process: the endless loop costs that much, and the
+    # heaviest honest test uses about a fifth of it (1.0 s, student and judge together, graded
+    # with -j 2 on an idle 2-core machine; tests/grading/README.md, "Budgets").
     argv = [str(a.build / "grading" / "workbook_grade"), "grade", "--setup", str(a.build / "grading"),
-            str(a.work / "class"), str(out), "-j", "2", "--timeout", "2"]
+            str(a.work / "class"), str(out), "-j", "2", "--timeout", "5"]
     status, cpu, wall = run(argv, a.work / f"grade-{tag}.log")
     if status != 0:
         raise SystemExit(f"FAILED: workbook_grade grade exited with {status}: see {a.work}/grade-{tag}.log")

@@ -494,7 +494,7 @@ struct TestRun {
 
 // A test's budgets: --timeout of processor time for each of its two processes, more when the
 // grader says it needs more (doctest::timeout; the heaviest, 197,511 calls of the student's
-// function, uses about 0.5 s and asks for 30 s), and a wall-clock backstop of --wall-timeout
+// function, uses 0.2 to 1 s and asks for 30 s), and a wall-clock backstop of --wall-timeout
 // or four times that, whichever is longer.
 Limits test_limits(const Options& options, const Test& test) {
     Limits limits = options.test_limits;

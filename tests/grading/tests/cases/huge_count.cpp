@@ -15,6 +15,7 @@ namespace {
 struct Mailbox {
     alignas(64) std::atomic<std::uint32_t> sequence;
     std::atomic<std::uint32_t> length;
+    std::atomic<std::uint32_t> sleeping;
     char data[1u << 20];
 };
 struct Mailboxes {
