@@ -4,9 +4,8 @@
 //
 // Conventions for this file
 //   * dy/dt = f(t, y) with f an OdeRhs (rigid/ode.hpp); states are Eigen::VectorXd.
-//   * Bad input throws std::invalid_argument: a step h that is not finite and > 0; no output
-//     times, or times that are not finite and strictly increasing; an initial state that is
-//     empty (size 0) or not finite.
+//   * Bad input (a step that is not finite and > 0, output times that are not finite and
+//     strictly increasing, a non-finite initial state) throws std::invalid_argument.
 //
 // How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
 // process of their own, which keeps its state between the calls of one test; the grader runs in
