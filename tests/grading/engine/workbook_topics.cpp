@@ -85,15 +85,14 @@ int scenes(const Catalog& catalog, const Command& c) {
     }
     // Which topics come from where, both lists in full: the scenes build from exactly these.
     std::vector<std::string> own, reference;
-    for (const auto& t : catalog.topics)
-        (started(t, folder_of(catalog, c)) ? own : reference).push_back(t.name);
+    for (const auto& t : catalog.topics) (started(t, folder_of(catalog, c)) ? own : reference).push_back(t.name);
     if (own.empty()) {
         std::printf("\033[1m== No exercises/*.cpp started yet: the scenes run on the reference solutions\033[0m\n");
     } else if (reference.empty()) {
         std::printf("\033[1m== Your code: %s (exercises/); every topic is yours\033[0m\n", joined(own, " ").c_str());
     } else {
-        std::printf("\033[1m== Your code: %s (exercises/); from solutions/: %s\033[0m\n",
-                    joined(own, " ").c_str(), joined(reference, " ").c_str());
+        std::printf("\033[1m== Your code: %s (exercises/); from solutions/: %s\033[0m\n", joined(own, " ").c_str(),
+                    joined(reference, " ").c_str());
     }
     const std::string nn = (chapter->number < 10 ? "0" : "") + std::to_string(chapter->number);
     return answer(c, nn + "\t" + chapter->folder + "\t" + cmake_list(own)) ? 0 : 2;
