@@ -261,7 +261,7 @@ endfunction()
 # The engine: the library and its programs, and the student's check (hint ladders, pristine stubs).
 function(_grading_engine)
   set(G "${WORKBOOK_GRADING_DIR}")
-  set(sources util sandbox setup stage grade report api similarity gradebook item_analysis class_report provenance mistakes
+  set(sources util sandbox setup stage grade report api similarity gradebook item_analysis class_report provenance mistakes calls
               private hints pristine catalog)
   list(TRANSFORM sources REPLACE "(.+)" "${G}/engine/\\1.cpp")
   add_library(workbook_grading STATIC ${sources})
@@ -515,6 +515,15 @@ function(_grading_tests)
            COMMAND grading_reporter_selftest --reporters=workbook --no-version)
   set_tests_properties("grading: a test that throws names the other exercises it uses" PROPERTIES LABELS grading
                        PASS_REGULAR_EXPRESSION "\"event\":\"exception\",\"info\":\\[\"this test also uses your planted_exercise")
+
+  # Blame through the call chain (grading.hpp, blame()): a failure another exercise of the student's
+  # may cause names it, in check and in the results .json; two students whose failures are their
+  # own are the self-test (tests/blame.sh).
+  add_test(NAME "grading: a failure that an exercise it calls may cause names that exercise, in check and in results"
+           COMMAND bash "${G}/tests/blame.sh" $<TARGET_FILE:workbook_grade> "${CMAKE_BINARY_DIR}/grading"
+                   "${WORKBOOK_ROOT}/solutions" "${CMAKE_BINARY_DIR}/test/blame")
+  set_tests_properties("grading: a failure that an exercise it calls may cause names that exercise, in check and in results"
+                       PROPERTIES LABELS grading TIMEOUT ${WORKBOOK_CASE_TIMEOUT})
 
   # The mutation gate (mutants/mutants.cpp; README.md, "The mutation gate"): plausible wrong
   # versions of solutions/<topic>.cpp graded by the grading run; every one must be caught unless

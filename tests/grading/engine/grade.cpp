@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -20,6 +21,7 @@
 #include <optional>
 #include <sstream>
 
+#include "calls.hpp"
 #include "grading.hpp"
 #include "mistakes.hpp"
 
@@ -372,8 +374,12 @@ struct Grading {
             if (prefix.size() > 1) text = replace_all(text, prefix, "");
         return relative_to_root(setup, text);
     }
-    bool selected(const Exercise& exercise) const {
-        return selection.exercise.empty() || exercise.name == selection.exercise;
+    // One exercise selected: it, and the topic's exercises the student's code of it calls (their
+    // failures may be its cause, and blame() can say so only of what was graded).
+    bool selected(const Topic& topic, const Exercise& exercise, const SubmissionResult& result) const {
+        if (selection.exercise.empty() || exercise.name == selection.exercise) return true;
+        const auto calls = result.uses.find(topic.name + "/" + selection.exercise);
+        return calls != result.uses.end() && calls->second.count(exercise.name);
     }
 };
 
@@ -605,7 +611,7 @@ void grade_unbuilt(const Grading& g, const Topic& topic, Verdict verdict, const 
     result.notes.push_back(
         (verdict == Verdict::build_error ? "exercises/" + topic.name + ".cpp does not build: " : "") + problem);
     for (const auto& exercise : topic.exercises) {
-        if (!g.selected(exercise)) continue;
+        if (!g.selected(topic, exercise, result)) continue;
         for (std::size_t k = 0; k < exercise.tests.size(); ++k) {
             result.tests.push_back({topic.chapter, topic.name, exercise.name, exercise.tests[k].name, verdict, 0,
                                     share(exercise.points, exercise.tests.size(), k), false, problem, ""});
@@ -616,10 +622,16 @@ void grade_unbuilt(const Grading& g, const Topic& topic, Verdict verdict, const 
 
 void grade_topic(const Grading& g, const Topic& topic, const SubmittedFile& file, SubmissionResult& result) {
     if (file.state != "ok") return grade_unbuilt(g, topic, Verdict::missing, file.reason, result);
+    // Which of the topic's exercises the student's code of each calls (calls.hpp): read from the
+    // text, never run; blame() names a failing one in the caller's failures.
+    std::set<std::string> names;
+    for (const auto& e : topic.exercises) names.insert(e.name);
+    for (auto& [exercise, others] : calls::uses_of(file.content, names))
+        result.uses[topic.name + "/" + exercise] = std::move(others);
     const Built b = build_topic(g, topic, file);
     if (!b.verdict) {
         for (const auto& exercise : topic.exercises) {
-            if (!g.selected(exercise)) continue;
+            if (!g.selected(topic, exercise, result)) continue;
             for (std::size_t k = 0; k < exercise.tests.size(); ++k)
                 result.tests.push_back(run_test(g, topic, file, b.binary, exercise, k));
         }
@@ -674,6 +686,14 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
         return std::string();
     };
     for (const auto& n : named) summary += "\n" + n.exercise + ": " + n.text();
+    // Blame through the call chain (grading.hpp): first on each failing test of the exercise.
+    const std::vector<Blame> blamed = blame(setup, r);
+    const auto blamed_on = [&](const TestResult& t) {
+        for (const auto& b : blamed)
+            if (b.topic == t.topic && b.exercise == t.exercise && t.verdict != Verdict::pass) return b.text + "\n\n";
+        return std::string();
+    };
+    for (const auto& b : blamed) summary += "\n" + b.text + ".";
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     std::string chapter;
     int in_chapter = 0;
@@ -681,7 +701,8 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
         const Chapter* c = find_chapter(setup, t.chapter);
         in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
         chapter = t.chapter;
-        std::string text = t.verdict == Verdict::pass ? to_string(t.verdict) : to_string(t.verdict) + ": " + t.message;
+        std::string text =
+            t.verdict == Verdict::pass ? to_string(t.verdict) : blamed_on(t) + to_string(t.verdict) + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
         text += likely(t);
         tests.push_back({{"name", t.name},
@@ -710,6 +731,12 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
                                           {"fingerprint", r.fingerprint}}},
                                         {"tests", tests}};
     nlohmann::ordered_json with = mistakes::with_likely_mistakes(out, named);
+    if (!blamed.empty()) {
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const auto& b : blamed)
+            list.push_back({{"topic", b.topic}, {"exercise", b.exercise}, {"uses", b.callees}, {"text", b.text}});
+        with["extra_data"]["blame"] = list;
+    }
     // The test environment (provenance.hpp), under extra_data as Gradescope allows.
     if (!r.provenance.is_null()) with["extra_data"]["provenance"] = r.provenance;
     return json_text(with);

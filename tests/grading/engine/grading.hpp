@@ -14,8 +14,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -266,6 +268,9 @@ struct SubmissionResult {
     std::string json_hash;  // of the results .json it was written with (from the .tsv)
     std::vector<TestResult> tests;
     std::vector<std::string> notes;  // one line per topic that did not build, or was refused
+    // "<topic>/<exercise>" -> the topic's other exercises that the student's own code of it calls,
+    // directly or through the file's helpers (calls.hpp, read from the submitted file): blame()
+    std::map<std::string, std::set<std::string>> uses;
     double score = 0, max_score = 0;
     nlohmann::ordered_json provenance;  // the test environment (provenance.hpp): the .json's extra_data, if set
 };
@@ -280,6 +285,29 @@ struct Selection {
 SubmissionResult grade_submission(const Setup& setup, const Options& options, const std::string& student,
                                   const std::vector<SubmittedFile>& files, const Selection& selection,
                                   const std::string& work_dir, const std::string& log_dir);
+
+// One exercise of a submission: its status (the worst of its tests' verdicts, or pass), how many
+// of its tests pass, and the first that does not.
+struct ExerciseStatus {
+    std::optional<Verdict> status;  // pass, fail, not started, build error, missing, timeout, crash; none: not selected
+    int passed = 0, total = 0;
+    double score = 0;
+    const TestResult* first_problem = nullptr;
+};
+
+ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, const std::string& exercise);
+
+// Blame through the call chain: an exercise that ran and does not pass, while an exercise that the
+// student's code of it calls (SubmissionResult::uses) was graded in this run and does not pass
+// either. The text says so
+// first: "integrate_rk4 calls your rk4_step, which fails 3 of its 4 tests: fix that first". Said in
+// `check` (report.cpp), on each failing test in the results .json and in its extra_data.blame.
+struct Blame {
+    std::string topic, exercise;
+    std::vector<std::string> callees;
+    std::string text;
+};
+std::vector<Blame> blame(const Setup& setup, const SubmissionResult& r);
 
 std::string results_json(const Setup& setup, const SubmissionResult& result);
 // The completion marker: every verdict and score, and the hash of the results .json written with it.

@@ -1,4 +1,5 @@
 // Reports: the class CSV and Markdown summary (instructor), and the student's check.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -8,25 +9,6 @@
 #include "mistakes.hpp"
 
 namespace grading {
-
-namespace {
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-    return "\"" + replace_all(s, "\"", "\"\"") + "\"";
-}
-
-std::string md_cell(const std::string& s) {
-    std::string out = replace_all(replace_all(s, "|", "\\|"), "\n", " ");
-    return out;
-}
-
-struct ExerciseStatus {
-    std::optional<Verdict> status;  // pass, fail, not started, build error, missing, timeout, crash; none: not selected
-    int passed = 0, total = 0;
-    double score = 0;
-    const TestResult* first_problem = nullptr;
-};
 
 ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, const std::string& exercise) {
     ExerciseStatus s;
@@ -60,6 +42,61 @@ ExerciseStatus status_of(const SubmissionResult& r, const std::string& topic, co
     else
         s.status = Verdict::fail;
     return s;
+}
+
+std::vector<Blame> blame(const Setup& setup, const SubmissionResult& r) {
+    std::vector<Blame> out;
+    for (const auto& topic : setup.topics)
+        for (const auto& e : topic.exercises) {
+            const ExerciseStatus s = status_of(r, topic.name, e.name);
+            // An exercise that did not run (its file does not build, is missing, or it is not
+            // started) is not blamed on another: the file is the problem.
+            if (!s.status || *s.status == Verdict::pass || *s.status == Verdict::not_started ||
+                *s.status == Verdict::build_error || *s.status == Verdict::missing)
+                continue;
+            Blame b{topic.name, e.name, {}, ""};
+            std::vector<std::string> parts;
+            const auto calls = r.uses.find(topic.name + "/" + e.name);
+            if (calls == r.uses.end()) continue;
+            for (const auto& u : calls->second) {
+                const ExerciseStatus c = status_of(r, topic.name, u);
+                if (!c.status || *c.status == Verdict::pass) continue;  // not graded here, or it passes
+                b.callees.push_back(u);
+                parts.push_back(*c.status == Verdict::not_started
+                                    ? "is not started"
+                                    : "fails " + std::to_string(c.total - c.passed) + " of its " +
+                                          std::to_string(c.total) + " test" + (c.total == 1 ? "" : "s"));
+            }
+            if (b.callees.empty()) continue;
+            const bool none_started =
+                std::all_of(parts.begin(), parts.end(), [](const std::string& p) { return p == "is not started"; });
+            const std::string first = none_started ? "write " : "fix ";
+            if (b.callees.size() == 1) {
+                b.text = e.name + " calls your " + b.callees[0] + ", which " + parts[0] + ": " + first + "that first";
+            } else {
+                std::string list;
+                for (std::size_t k = 0; k < b.callees.size(); ++k)
+                    list += (k == 0                      ? ""
+                             : k + 1 == b.callees.size() ? " and "
+                                                         : ", ") +
+                            b.callees[k] + " (" + parts[k].substr(parts[k].rfind("is ", 0) == 0 ? 3 : 0) + ")";
+                b.text = e.name + " calls your " + list + ": " + first + "those first";
+            }
+            out.push_back(b);
+        }
+    return out;
+}
+
+namespace {
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    return "\"" + replace_all(s, "\"", "\"\"") + "\"";
+}
+
+std::string md_cell(const std::string& s) {
+    std::string out = replace_all(replace_all(s, "|", "\\|"), "\n", " ");
+    return out;
 }
 
 }  // namespace
@@ -161,6 +198,7 @@ struct Tally {
 // pass); collects the exercises that do not pass.
 Tally print_chapters(const Setup& setup, const SubmissionResult& r) {
     Tally tally;
+    const std::vector<Blame> blamed = blame(setup, r);
     for (const auto& chapter : setup.chapters) {
         std::vector<std::pair<std::string, ExerciseStatus>> rows;
         for (const auto& topic : setup.topics) {
@@ -185,6 +223,13 @@ Tally print_chapters(const Setup& setup, const SubmissionResult& r) {
             if (s.status != Verdict::pass && s.status != Verdict::not_started && s.status != Verdict::missing &&
                 s.status != Verdict::build_error)
                 detail = std::to_string(s.passed) + " of " + std::to_string(s.total) + " tests pass";
+            for (const auto& b : blamed)
+                if (b.exercise == name) {
+                    std::string list;
+                    for (const auto& c : b.callees) list += (list.empty() ? "" : ", ") + c;
+                    detail += "; it calls your " + list +
+                              (b.callees.size() == 1 ? ", which does not pass" : ", which do not pass");
+                }
             char row[256];
             std::snprintf(row, sizeof row, "  %-12s %-26s %s", to_string(*s.status).c_str(), name.c_str(),
                           detail.c_str());
@@ -213,6 +258,9 @@ void print_first(const Setup& setup, const SubmissionResult& r, const Problem& f
         std::printf("  a hint when you want one: cmake/workbook check %s --hint 1\n", first.exercise.c_str());
         return;
     }
+    for (const auto& b : blame(setup, r))
+        if (b.topic == first.topic && b.exercise == first.exercise)
+            std::printf("  %s (cmake/workbook check %s)\n", b.text.c_str(), b.callees.front().c_str());
     std::printf("  test: %s\n  %s", t.name.c_str(), to_string(t.verdict).c_str());
     if (t.verdict == Verdict::fail || t.verdict == Verdict::build_error || t.verdict == Verdict::missing) {
         std::printf(":\n");

@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "calls.hpp"
 #include "catalogue.hpp"
 #include "support/file.hpp"
 #include "support/process.hpp"
@@ -87,91 +88,19 @@ std::string slurp(const fs::path& path) {
 using grading::Verdict;
 using support::trim;
 
-// ---- Where code is: a mask over the file, false inside comments, literals and # lines. ----
-
-std::vector<bool> code_mask(const std::string& s) {
-    std::vector<bool> code(s.size(), true);
-    std::size_t i = 0;
-    bool line_start = true;
-    auto blank = [&](std::size_t from, std::size_t to) {
-        for (std::size_t k = from; k < to && k < s.size(); ++k) code[k] = false;
-    };
-    while (i < s.size()) {
-        const char c = s[i];
-        std::size_t end = i + 1;
-        if (line_start && c == '#') {
-            end = s.find('\n', i);
-        } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
-            end = s.find('\n', i);
-        } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
-            end = s.find("*/", i + 2);
-            end = end == std::string::npos ? end : end + 2;
-        } else if (c == '"' || c == '\'') {
-            end = i + 1;
-            while (end < s.size() && s[end] != c) end += s[end] == '\\' ? 2 : 1;
-            ++end;
-        } else {
-            if (c == '\n')
-                line_start = true;
-            else if (c != ' ' && c != '\t')
-                line_start = false;
-            ++i;
-            continue;
-        }
-        if (end == std::string::npos || end > s.size()) end = s.size();
-        blank(i, end);
-        i = end;
-    }
-    return code;
-}
-
-// ---- Which function each character belongs to: namespace-level bodies, by brace depth. ----
-
-struct Body {
-    std::size_t begin, end;  // the braces' positions
-    std::string name, header;
-};
-
-bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// The name of the function whose header ends at `open` (a '{'), or "" if it is not a function.
-std::string function_name(const std::string& s, const std::vector<bool>& code, std::size_t from, std::size_t open,
-                          std::string* header) {
-    std::string h;
-    for (std::size_t k = from; k < open; ++k) h += code[k] && s[k] != '\n' ? s[k] : ' ';
-    *header = trim(h);
-    const auto paren = h.find('(');
-    if (paren == std::string::npos || h.find("namespace") != std::string::npos) return "";
-    auto e = paren;
-    while (e > 0 && h[e - 1] == ' ') --e;
-    auto b = e;
-    while (b > 0 && is_ident(h[b - 1])) --b;
-    return h.substr(b, e - b);
-}
+// Where code is, and which function each character belongs to: calls.hpp (the engine's, one reader
+// for the gate, the manifest's `uses` and the catalogue).
+using grading::calls::Body;
+using grading::calls::code_mask;
 
 std::vector<Body> function_bodies(const std::string& s, const std::vector<bool>& code) {
-    std::vector<Body> bodies;
-    std::vector<bool> is_function;  // a stack: true for a function's brace
-    std::size_t header_from = 0;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (!code[i]) continue;
-        const bool inside = std::find(is_function.begin(), is_function.end(), true) != is_function.end();
-        if (s[i] == '{') {
-            std::string header, name;
-            if (!inside) name = function_name(s, code, header_from, i, &header);
-            is_function.push_back(!name.empty());
-            if (!name.empty()) bodies.push_back({i, std::string::npos, name, header});
-        } else if (s[i] == '}') {
-            if (is_function.empty()) die("unbalanced braces");
-            if (is_function.back() && std::count(is_function.begin(), is_function.end(), true) == 1)
-                bodies.back().end = i;
-            is_function.pop_back();
-        }
-        const bool inside_now = std::find(is_function.begin(), is_function.end(), true) != is_function.end();
-        if (!inside_now && (s[i] == ';' || s[i] == '{' || s[i] == '}')) header_from = i + 1;
-    }
+    std::string error;
+    auto bodies = grading::calls::function_bodies(s, code, &error);
+    if (!error.empty()) die(error);
     return bodies;
 }
+
+bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // ---- The operators. Each returns the mutated line, or "" when it does not apply at `at`. ----
 //
@@ -780,32 +709,9 @@ int run(const Options& o) {
 // catalogue: the likely mistakes of the gate's run in --from (README.md, "Likely mistakes, named");
 // stale: whether the committed catalogue still has the hash of this tree's graders and solutions.
 // For each exercise of the topic, the other exercises its reference body calls, directly or through
-// helpers: a failure of those may be what makes it fail, so it is then not named.
+// helpers (calls.hpp): a failure of those may be what makes it fail, so it is then not named.
 std::map<std::string, std::set<std::string>> uses_of(const fs::path& file, const std::set<std::string>& exercises) {
-    const std::string s = slurp(file);
-    const auto code = code_mask(s);
-    std::map<std::string, std::set<std::string>> calls;  // function -> functions of the file it calls
-    const auto bodies = function_bodies(s, code);
-    for (const auto& b : bodies)
-        for (const auto& other : bodies) {
-            const std::regex call("\\b" + other.name + "\\(");
-            const std::string text = s.substr(b.begin, b.end - b.begin);
-            if (other.name != b.name && std::regex_search(text, call)) calls[b.name].insert(other.name);
-        }
-    std::map<std::string, std::set<std::string>> uses;
-    for (const auto& e : exercises) {
-        std::set<std::string> seen;
-        std::vector<std::string> todo(calls[e].begin(), calls[e].end());
-        while (!todo.empty()) {
-            const std::string f = todo.back();
-            todo.pop_back();
-            if (!seen.insert(f).second) continue;
-            todo.insert(todo.end(), calls[f].begin(), calls[f].end());
-        }
-        for (const auto& f : seen)
-            if (f != e && exercises.count(f)) uses[e].insert(f);
-    }
-    return uses;
+    return grading::calls::uses_of(slurp(file), exercises);
 }
 
 int catalogue(const Options& o) {
