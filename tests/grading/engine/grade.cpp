@@ -668,6 +668,22 @@ SubmissionResult grade_submission(const Setup& setup, const Options& options, co
 
 // ---- results -----------------------------------------------------------------------------------
 
+namespace {
+// What a failing test of a blamed exercise says first (blame(), grading.hpp); "" for the others.
+std::string blamed_on(const std::vector<Blame>& blamed, const TestResult& t) {
+    for (const auto& b : blamed)
+        if (b.topic == t.topic && b.exercise == t.exercise && t.verdict != Verdict::pass) return b.text + "\n\n";
+    return {};
+}
+// extra_data.blame: [{"topic", "exercise", "uses", "text"}].
+nlohmann::ordered_json blame_json(const std::vector<Blame>& blamed) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& b : blamed)
+        list.push_back({{"topic", b.topic}, {"exercise", b.exercise}, {"uses", b.callees}, {"text", b.text}});
+    return list;
+}
+}  // namespace
+
 // Gradescope's results.json: a total, and per test its score, maximum, status and output.
 // Everything in it follows from the inputs alone, so a repeated run writes the same bytes.
 std::string results_json(const Setup& setup, const SubmissionResult& result) {
@@ -688,11 +704,6 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
     for (const auto& n : named) summary += "\n" + n.exercise + ": " + n.text();
     // Blame through the call chain (grading.hpp): first on each failing test of the exercise.
     const std::vector<Blame> blamed = blame(setup, r);
-    const auto blamed_on = [&](const TestResult& t) {
-        for (const auto& b : blamed)
-            if (b.topic == t.topic && b.exercise == t.exercise && t.verdict != Verdict::pass) return b.text + "\n\n";
-        return std::string();
-    };
     for (const auto& b : blamed) summary += "\n" + b.text + ".";
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     std::string chapter;
@@ -701,8 +712,8 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
         const Chapter* c = find_chapter(setup, t.chapter);
         in_chapter = t.chapter == chapter ? in_chapter + 1 : 1;
         chapter = t.chapter;
-        std::string text =
-            t.verdict == Verdict::pass ? to_string(t.verdict) : blamed_on(t) + to_string(t.verdict) + ": " + t.message;
+        std::string text = t.verdict == Verdict::pass ? to_string(t.verdict)
+                                                      : blamed_on(blamed, t) + to_string(t.verdict) + ": " + t.message;
         if (!t.output.empty()) text += "\n\nThe test printed:\n" + t.output;
         text += likely(t);
         tests.push_back({{"name", t.name},
@@ -731,12 +742,7 @@ std::string results_json(const Setup& setup, const SubmissionResult& result) {
                                           {"fingerprint", r.fingerprint}}},
                                         {"tests", tests}};
     nlohmann::ordered_json with = mistakes::with_likely_mistakes(out, named);
-    if (!blamed.empty()) {
-        nlohmann::ordered_json list = nlohmann::ordered_json::array();
-        for (const auto& b : blamed)
-            list.push_back({{"topic", b.topic}, {"exercise", b.exercise}, {"uses", b.callees}, {"text", b.text}});
-        with["extra_data"]["blame"] = list;
-    }
+    if (!blamed.empty()) with["extra_data"]["blame"] = blame_json(blamed);
     // The test environment (provenance.hpp), under extra_data as Gradescope allows.
     if (!r.provenance.is_null()) with["extra_data"]["provenance"] = r.provenance;
     return json_text(with);
