@@ -130,3 +130,20 @@ function(workbook_load_test)
                        "FAILED: the load changed more than run times:.*planted wall-clock sweep: 1 differences")
   set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS "load;grading" TIMEOUT 1200 PROCESSORS 2)
 endfunction()
+
+# ------------------------------------------------------------------------------------------
+# Contracts state every rule the graders check (contracts.py): each CHECK_THROWS of an exercise
+# names what it rejects in its arguments (NaN or infinity, an empty list or state, a zero vector,
+# the exception), and the exercise's comment in exercises/rigid/ must say so. Its self-test plants
+# a header without its empty-state rule, one without "finite" and a grader expecting an exception
+# no contract names; each must be flagged.
+function(workbook_contract_check)
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
+  set(script "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/contracts.py")
+  set(check "code: every rejection a grader tests is stated in the exercise's contract")
+  set(selftest "code: the contract check flags a rule missing from a contract and an exception no contract names")
+  add_test(NAME "${check}" COMMAND ${Python3_EXECUTABLE} "${script}" check --root "${WORKBOOK_ROOT}")
+  add_test(NAME "${selftest}" COMMAND ${Python3_EXECUTABLE} "${script}" selftest --root "${WORKBOOK_ROOT}"
+                                      --work "${CMAKE_BINARY_DIR}/test/contracts")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 120)
+endfunction()

@@ -4,8 +4,9 @@
 //
 // Conventions for this file
 //   * dy/dt = f(t, y) with f an OdeRhs (rigid/ode.hpp); states are Eigen::VectorXd.
-//   * Bad input (a step that is not finite and > 0, output times that are not finite and
-//     strictly increasing, a non-finite initial state) throws std::invalid_argument.
+//   * Bad input (a step that is not finite and > 0; no output times, or output times that are
+//     not finite and strictly increasing; an empty or non-finite initial state) throws
+//     std::invalid_argument.
 //
 // How it is graded (tests/grading/README.md): each test calls your functions in a sandboxed
 // process of their own, which keeps its state between the calls of one test; the grader runs in
