@@ -62,8 +62,8 @@ function(workbook_include_check)
   foreach(name IN LISTS units)
     list(APPEND roles "grader|${name}")
   endforeach()
-  foreach(name IN ITEMS workbook_grading workbook_grade workbook_hints workbook_topics workbook_judge workbook_serve
-                        workbook_mutants)
+  foreach(name IN ITEMS workbook_grading workbook_catalog workbook_api_objects workbook_api workbook_grade workbook_hints
+                        workbook_topics workbook_judge workbook_serve workbook_mutants)
     list(APPEND roles "engine|${name}")
   endforeach()
   foreach(entry IN LISTS roles)

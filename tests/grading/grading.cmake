@@ -261,10 +261,22 @@ endfunction()
 # The engine: the library and its programs, and the student's check (hint ladders, pristine stubs).
 function(_grading_engine)
   set(G "${WORKBOOK_GRADING_DIR}")
-  set(sources util sandbox setup stage grade report api similarity gradebook item_analysis class_report provenance mistakes calls
-              private hints pristine catalog)
+  set(sources setup stage grade report similarity gradebook item_analysis class_report provenance mistakes calls
+              private hints pristine)
   list(TRANSFORM sources REPLACE "(.+)" "${G}/engine/\\1.cpp")
-  add_library(workbook_grading STATIC ${sources})
+  # catalog.cpp is compiled once, for workbook_topics (the front door builds that first) and the
+  # library alike: a first `check` does not wait for it twice.
+  add_library(workbook_catalog OBJECT "${G}/engine/catalog.cpp")
+  target_link_libraries(workbook_catalog PUBLIC nlohmann_json::nlohmann_json workbook_support)
+  workbook_warnings(workbook_catalog)
+  # api.cpp, util.cpp and sandbox.cpp (api runs nm under limits) likewise, for workbook_api (the
+  # build step that writes each topic's judge and student's side) and the library: with the step a program of its own, the judges compile
+  # while the rest of the engine is still being built.
+  add_library(workbook_api_objects OBJECT "${G}/engine/api.cpp" "${G}/engine/util.cpp" "${G}/engine/sandbox.cpp")
+  target_link_libraries(workbook_api_objects PUBLIC nlohmann_json::nlohmann_json workbook_support)
+  target_compile_options(workbook_api_objects PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>)
+  workbook_warnings(workbook_api_objects)
+  add_library(workbook_grading STATIC ${sources} $<TARGET_OBJECTS:workbook_catalog> $<TARGET_OBJECTS:workbook_api_objects>)
   target_include_directories(workbook_grading PUBLIC "${G}/engine")
   target_link_libraries(workbook_grading PUBLIC nlohmann_json::nlohmann_json workbook_support)
   # The class report's gnuplot scripts (report/*.gp): grading::gp::<name> in class_report.gp.hpp.
@@ -274,6 +286,11 @@ function(_grading_engine)
   # GCC 12 warns falsely on "literal" + std::string temporaries at -O3 (GCC bug 105329).
   target_compile_options(workbook_grading PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>)
 
+  add_executable(workbook_api "${G}/engine/workbook_api.cpp" $<TARGET_OBJECTS:workbook_api_objects>)
+  target_include_directories(workbook_api PRIVATE "${G}/engine")
+  target_link_libraries(workbook_api PRIVATE workbook_support nlohmann_json::nlohmann_json CLI11::CLI11)
+  workbook_warnings(workbook_api)
+
   add_executable(workbook_grade "${G}/engine/workbook_grade.cpp")
   target_link_libraries(workbook_grade PRIVATE workbook_grading CLI11::CLI11)
   set_target_properties(workbook_grade PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/grading")
@@ -281,7 +298,7 @@ function(_grading_engine)
 
   # What a key on the command line means (engine/catalog.hpp), for the front door before it builds
   # anything: a program of two sources, built in seconds.
-  add_executable(workbook_topics "${G}/engine/workbook_topics.cpp" "${G}/engine/catalog.cpp")
+  add_executable(workbook_topics "${G}/engine/workbook_topics.cpp" $<TARGET_OBJECTS:workbook_catalog>)
   set_target_properties(workbook_topics PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/grading")
   target_link_libraries(workbook_topics PRIVATE workbook_support nlohmann_json::nlohmann_json CLI11::CLI11)
   workbook_warnings(workbook_topics)
@@ -333,7 +350,7 @@ endfunction()
 function(_grading_remote)
   set(G "${WORKBOOK_GRADING_DIR}")
   # The two processes of a graded test (README, "Grading a class"; remote/). Per topic with
-  # graders, generated from the grader's objects and the reference library (workbook_grade api):
+  # graders, generated from the grader's objects and the reference library (workbook_api):
   #   judge_<topic>    the trusted process that runs the grader's doctest cases: the grader's
   #                    objects, the judge's side of the API and the reference libraries of the
   #                    topic's dependencies; no student code;
@@ -390,9 +407,9 @@ function(_grading_remote)
       set(library ${aliased})
     endif()
     add_custom_command(OUTPUT ${outputs}
-      COMMAND workbook_grade api --topic ${topic} --nm "${CMAKE_NM}" --library $<TARGET_FILE:${library}>
+      COMMAND workbook_api --topic ${topic} --nm "${CMAKE_NM}" --library $<TARGET_FILE:${library}>
               --out "${api_dir}" --objects $<TARGET_OBJECTS:grade_${topic}_objects> ${private_objects}
-      DEPENDS workbook_grade ${library} grade_${topic}_objects $<TARGET_OBJECTS:grade_${topic}_objects> ${private}
+      DEPENDS workbook_api ${library} grade_${topic}_objects $<TARGET_OBJECTS:grade_${topic}_objects> ${private}
               ${private_objects}
       COMMAND_EXPAND_LISTS VERBATIM  # VERBATIM: a private test's object path may hold spaces, quotes, parentheses
       COMMENT "Generating the judge and the student's side of ${topic}'s API")
@@ -547,7 +564,8 @@ function(_grading_tests)
   # built at -O1 (the build's -O3 is overridden, the last -O wins), they compile in about 60% of
   # the time (grade.cpp: 12.8 s against 22.1 s, measured), which a student's first `check` waits
   # for. The judges, the student's side and the graders keep the build's optimisation.
-  foreach(t workbook_grading workbook_grade workbook_hints workbook_topics grading_suite grading_class grading_json_test
+  foreach(t workbook_grading workbook_catalog workbook_api_objects workbook_api workbook_grade workbook_hints workbook_topics
+            grading_suite grading_class grading_json_test
             workbook_mutants workbook_seccomp_filter test_hints)
     target_compile_options(${t} PRIVATE -O1)
   endforeach()

@@ -626,24 +626,6 @@ int check(const Args& a) {
     return all ? 0 : 1;
 }
 
-// api --topic <t> --nm <nm> --library <lib.a> --out <dir> --objects <o>... (build time)
-struct Api {
-    std::string topic, nm, library, out;
-    std::vector<std::string> objects;
-};
-
-void api_options(CLI::App& app, Api& api) {
-    for (const auto& [name, value] :
-         {std::pair{"--topic", &api.topic}, {"--nm", &api.nm}, {"--library", &api.library}, {"--out", &api.out}})
-        app.add_option(name, *value)->required();
-    app.add_option("--objects", api.objects)->required();
-}
-
-int api(const Api& api) {
-    const std::string problem = make_api(api.topic, api.nm, api.library, api.objects, api.out);
-    return problem.empty() ? 0 : fail(problem);
-}
-
 int manifest(const Args& a) {
     if (a.topics.empty() || a.points.empty() || a.out.empty())
         return fail(std::string("manifest needs --topics, --points and --out\n") + usage);
@@ -654,10 +636,10 @@ int manifest(const Args& a) {
 }  // namespace
 
 // One subcommand per job (CLI11): grade, check, similarity and manifest take the same options
-// (the usage above is the help); api, a build step, its own. A wrong one exits with status 2.
+// (the usage above is the help). A wrong one exits with status 2. (The build step that writes a
+// topic's judge and student's side is workbook_api.)
 int main(int argc, char** argv) {
     Args a;
-    Api api_args;
     CLI::App app{"workbook_grade"};
     app.set_help_flag();
     app.add_flag_callback("-h,--help", [] { std::printf("%s", usage), std::exit(0); });
@@ -669,8 +651,6 @@ int main(int argc, char** argv) {
         subcommands.push_back(app.add_subcommand(name));
         command_options(*subcommands.back(), a);
     }
-    CLI::App* api_command = app.add_subcommand("api");
-    api_options(*api_command, api_args);
     app.add_subcommand("help")->callback([] { std::printf("%s", usage), std::exit(0); });
     try {
         app.parse(argc, argv);
@@ -680,7 +660,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     wipe_seed(argc, argv);
-    if (api_command->parsed()) return api(api_args);
     for (std::size_t k = 0; k < commands.size(); ++k)
         if (subcommands[k]->parsed()) return commands[k].second(a);
     return fail(std::string("no command\n") + usage);
