@@ -169,30 +169,6 @@ std::string build_problem(const Outcome& o, const std::string& what, const std::
     return "the " + what + " failed with exit status " + std::to_string(o.exit_code);
 }
 
-// What an exercise file may not do, as the symbols of its object show: use doctest to register
-// tests, reporters or listeners of its own (tests come from the graders only; merely including
-// doctest.h uses none of them), or define an indirect function (ifunc), whose resolver the
-// dynamic linker would run before the student's process has installed its seccomp filter.
-std::string object_problem(const Setup& setup, const std::string& object, const std::string& work_dir,
-                           const Options& options) {
-    if (setup.nm.empty()) return {};
-    const std::string listing = work_dir + "/logs/symbols.txt";
-    const Outcome o = run_limited({setup.nm, "-C", object}, work_dir, listing, options.build_limits);
-    if (!o.started || o.exit_code != 0) return {};
-    for (const auto& line : split(read_file(listing), '\n')) {
-        const auto f = split(trim(line), ' ');
-        if (f.size() >= 3 && f[1] == "i")
-            return "defines an indirect function (ifunc): " + f[2] + ", which the grading run does not allow";
-        if (line.find("doctest::detail::regTest") != std::string::npos ||
-            line.find("doctest::detail::registerReporterImpl") != std::string::npos ||
-            line.find("doctest::detail::registerExceptionTranslatorImpl") != std::string::npos ||
-            line.find("doctest::Context::") != std::string::npos)
-            return "uses the test framework (doctest) to define tests, reporters or a main: exercise files must not "
-                   "define tests or reporters";
-    }
-    return {};
-}
-
 // A test's share of its exercise's points: equal shares to 4 decimals, the rounding remainder to
 // the last test, so that the shares written in the results add up to the exercise's points.
 double share(double points, std::size_t tests, std::size_t k) {
@@ -403,13 +379,20 @@ std::vector<std::string> fill(const std::vector<std::string>& words, const View&
     return out;
 }
 
-// The build sandbox's limits: the API headers, the link inputs and the job folder.
-Limits build_limits(const Grading& g, const std::string& job) {
+// The build sandbox's limits: the compile sees the API headers and the job folder; the link
+// sees, instead of the headers, each of the topic's own link inputs (its student's side of the API and
+// its dependencies' references, never another topic's) and the job folder. A compile that could
+// read the link inputs could `.incbin` a reference library into the student's object (issue 42).
+Limits build_limits(const Grading& g, const std::string& job, bool linking, const Topic* topic = nullptr) {
     Limits limits = g.options.build_limits;
     limits.sandbox = Sandbox::build;
-    limits.binds = {{g.options.stage.dir + "/api", "/workbook", false},
-                    {g.options.stage.dir + "/link", "/link", false},
-                    {job, "/submission", true}};
+    limits.binds.clear();
+    if (!linking) limits.binds.push_back({g.options.stage.dir + "/api", "/workbook", false});
+    if (linking && topic)
+        for (const auto& w : topic->link)
+            if (starts_with(w, "@LINK@/"))
+                limits.binds.push_back({g.options.stage.dir + "/link" + w.substr(6), "/link" + w.substr(6), false});
+    limits.binds.push_back({job, "/submission", true});
     return limits;
 }
 
@@ -433,7 +416,7 @@ Outcome compile(const Grading& g, const Topic& topic, const std::string& content
     const Outcome o = in_turn(g.options.stage, [&] {
         return run_limited(fill(topic.compile, view, view.submission + "/exercises/" + topic.name + ".cpp",
                                 view.submission + "/obj/" + topic.name + ".o"),
-                           job, log, build_limits(g, job));
+                           job, log, build_limits(g, job, false));
     });
     if (!cached.empty() && o.started && !o.timed_out && !o.signal && o.exit_code == 0) {
         make_dirs(g.options.object_cache);
@@ -457,7 +440,44 @@ Outcome link(const Grading& g, const Topic& topic, const std::string& job, const
         if (!ends_with(input, ".o")) command.push_back(input);
     command.push_back("-o");
     command.push_back(view.submission + "/bin/serve_" + topic.name);
-    return in_turn(g.options.stage, [&] { return run_limited(command, job, log, build_limits(g, job)); });
+    return in_turn(g.options.stage, [&] { return run_limited(command, job, log, build_limits(g, job, true, &topic)); });
+}
+
+// What an exercise file may not do, as the symbols of its object show: use doctest to register
+// tests, reporters or listeners of its own (tests come from the graders only; merely including
+// doctest.h uses none of them), or define an indirect function (ifunc), whose resolver the
+// dynamic linker would run before the student's process has installed its seccomp filter.
+// The listing runs in the build sandbox, as the build's user, and without demangling (the type
+// letter needs none, and a 170-byte mangled name can demangle to gigabytes): a listing that does
+// not end cleanly is itself the problem, never a pass (issue 42: `nm -C` killed by its output
+// limit let an ifunc through).
+std::string object_problem(const Grading& g, const Topic& topic, const std::string& job) {
+    if (g.setup.nm.empty()) return {};
+    const std::string listing = job + "/symbols.txt";
+    const View view = view_of(g.options.stage, job);
+    const Outcome o = in_turn(g.options.stage, [&] {
+        return run_limited({g.setup.nm, view.submission + "/obj/" + topic.name + ".o"}, job, listing,
+                           build_limits(g, job, false));
+    });
+    if (!o.started || o.timed_out || o.out_of_cpu || o.signal || o.exit_code != 0)
+        return "could not be checked: listing the symbols of its object (nm) " +
+               (!o.started ? "could not start: " + o.error
+                : o.signal ? "was killed by " + signal_name(o.signal)
+                           : "failed with exit status " + std::to_string(o.exit_code));
+    for (const auto& line : split(read_file(listing), '\n')) {
+        const auto f = split(trim(line), ' ');
+        if (f.size() >= 3 && f[1] == "i")
+            return "defines an indirect function (ifunc): " + f[2].substr(0, 200) +
+                   ", which the grading run does not allow";
+        // doctest::detail::regTest, registerReporterImpl, registerExceptionTranslatorImpl and
+        // doctest::Context's members, as the compiler spells them.
+        for (const char* used : {"_ZN7doctest6detail7regTest", "_ZN7doctest6detail20registerReporterImpl",
+                                 "_ZN7doctest6detail31registerExceptionTranslatorImpl", "_ZN7doctest7Context"})
+            if (line.find(used) != std::string::npos)
+                return "uses the test framework (doctest) to define tests, reporters or a main: exercise files must "
+                       "not define tests or reporters";
+    }
+    return {};
 }
 
 Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& file) {
@@ -473,10 +493,9 @@ Built build_topic(const Grading& g, const Topic& topic, const SubmittedFile& fil
     Outcome o = compile(g, topic, file.content, job, log);
     std::string text = g.relative(read_file(log));
     std::string build_log = "$ compile exercises/" + topic.name + ".cpp\n" + first_lines(text, 200000);
-    const std::string object = job + "/obj/" + topic.name + ".o";
     if (!o.started || o.timed_out || o.signal || o.exit_code != 0) {
         b.verdict = Verdict::build_error, b.problem = build_problem(o, "compiler", text, g.options.build_limits);
-    } else if (const std::string why = object_problem(g.setup, object, g.work_dir, g.options); !why.empty()) {
+    } else if (const std::string why = object_problem(g, topic, job); !why.empty()) {
         b.verdict = Verdict::build_error, b.problem = "exercises/" + topic.name + ".cpp " + why;
         build_log += "$ nm exercises/" + topic.name + ".o\n" + b.problem + "\n";
     } else {
@@ -522,9 +541,12 @@ TestRun run_pair(const Grading& g, const Topic& topic, const std::string& binary
         r.student.error = std::string("socketpair: ") + std::strerror(errno);
         return r;
     }
-    // The mailboxes the two share (tests/grading/engine/remote/channel.hpp), zeroed, for this test alone.
-    const int shared = memfd_create("workbook-mailboxes", MFD_CLOEXEC);
-    if (shared < 0 || ftruncate(shared, 4 << 20) != 0) {
+    // The mailboxes the two share (tests/grading/engine/remote/channel.hpp), zeroed, for this test
+    // alone; sealed at their size, so that the student's side cannot shrink them under the
+    // judge's mapping (a read past the end would kill the judge with SIGBUS, issue 42).
+    const int shared = memfd_create("workbook-mailboxes", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+    if (shared < 0 || ftruncate(shared, 4 << 20) != 0 ||
+        fcntl(shared, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_SEAL) != 0) {
         r.student.error = std::string("memfd_create: ") + std::strerror(errno);
         close(pair[0]), close(pair[1]);
         if (shared >= 0) close(shared);

@@ -106,8 +106,18 @@ std::vector<std::string> bwrap_base() {
 // not count against it.
 std::vector<std::string> bwrap_test(const std::string& name, long tmp_bytes, int binary_fd) {
     std::vector<std::string> a = bwrap_base();
-    a.insert(a.end(), {"--size", std::to_string(tmp_bytes), "--tmpfs", "/work", "--chdir", "/work", "--perms", "0555",
-                       "--ro-bind-data", std::to_string(binary_fd), "/run/test/" + name});
+    // --as-pid-1: the student's process is its PID namespace's first and only process. With
+    // bubblewrap's own reaper as PID 1 (same user, no filter), a student's thread could attach
+    // to it and make it start a program unfiltered (issue 42). A PID 1 ignores signals it has no
+    // handler for; the student's side handles the fatal ones itself (remote/serve.cpp, harden).
+    a.insert(a.end(), {"--as-pid-1", "--size", std::to_string(tmp_bytes), "--tmpfs", "/work", "--chdir", "/work",
+                       "--perms", "0555", "--ro-bind-data", std::to_string(binary_fd), "/run/test/" + name});
+    // Nothing else it can fill: bubblewrap's /, /dev and /dev/shm are tmpfs of half the
+    // machine's memory, writable, outside the address-space limit (issue 42). /dev/shm gets the
+    // size of /work, and / and /dev are made read-only (a device such as /dev/null still takes
+    // writes); memfd_create is refused by the filter.
+    a.insert(a.end(),
+             {"--size", std::to_string(tmp_bytes), "--tmpfs", "/dev/shm", "--remount-ro", "/dev", "--remount-ro", "/"});
     return a;
 }
 
@@ -331,6 +341,7 @@ int arrange_descriptors(const Launch& l, Pipes& p, bool with_report, int in, int
     if (l.own_user && test && !l.namespaces && chown(cwd.c_str(), uid, uid) != 0) exec_failed(report);
     if (l.own_user && (setgroups(0, nullptr) != 0 || setgid(uid) != 0 || setuid(uid) != 0)) exec_failed(report);
     if (l.processes > 0) set_limit(RLIMIT_NPROC, l.processes, l.processes);
+    if (test) set_limit(RLIMIT_NOFILE, 64, 64);  // its descriptors and a few dozen of its own, not 1,536 memfds
     if (limits.forbid_processes && limits.sandbox == Sandbox::none) set_limit(RLIMIT_NPROC, 0, 0);
     if (l.own_user && !l.namespaces && program_copy >= 0)
         fexecve(program_copy, l.args.data(), l.env.data());

@@ -153,9 +153,10 @@ void command_options(CLI::App& app, Args& a) {
     app.add_flag("--keep-work", a.options.keep_work);
     app.add_flag("--unsafe", a.unsafe);
     app.add_option("--seed", a.options.seed)->check([](const std::string& v) {
-        return v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 19
-                   ? "needs a whole number (at most 19 digits)"
-                   : "";
+        errno = 0;
+        const bool number = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos &&
+                            (std::strtoull(v.c_str(), nullptr, 10), errno == 0);
+        return number ? "" : "needs a whole number below 2^64 (at most 18446744073709551615)";
     });
     limit_options(app, a.options);
     app.add_option("arguments", a.positional)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -545,6 +546,10 @@ int grade(const Args& a) {
                     ": refusing to grade, since students' code would run as you, able to read and write what you can "
                     "(the workbook, the build, the results). Install bubblewrap or run as root; or, knowing that, "
                     "pass --unsafe.");
+    if (!a.options.seed.empty() && std::strtoull(a.options.seed.c_str(), nullptr, 10) < (1ull << 40))
+        std::fprintf(stderr,
+                     "workbook_grade: warning: --seed is below 2^40: a submission could find it by trying every "
+                     "seed against its inputs; use a random 64-bit number (od -An -N8 -tu8 /dev/urandom)\n");
     std::printf("Grading %zu submissions from %s with %d jobs: %zu topics, %zu tests each (%s%s)\n", students.size(),
                 submissions.c_str(), jobs, setup.topics.size(), tests, sandbox.c_str(),
                 a.options.seed.empty() ? "; the public seed: pass --seed to draw inputs students have not seen" : "");

@@ -4,6 +4,9 @@
 //   clone without CLONE_THREAD, fork, vfork   EPERM   (threads stay possible: honest code)
 //   clone3                                     ENOSYS  (so the C library makes threads with clone)
 //   execve, execveat                           EPERM
+//   ptrace, process_vm_readv/writev,           EPERM   (no reaching into another process: the
+//   pidfd_open, pidfd_getfd, kcmp                       sandbox's PID 1 ran unfiltered, issue 42)
+//   memfd_create, memfd_secret                 EPERM   (memory outside the address-space limit)
 // A system call of another architecture (i386 on x86_64) kills the process (libseccomp's default).
 //
 //   workbook_seccomp_filter <out.inc>
@@ -24,7 +27,9 @@ int main(int argc, char** argv) {
     scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
     if (!ctx) return 1;
     int bad = 0;
-    for (const int call : {SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(execve), SCMP_SYS(execveat)})
+    for (const int call : {SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(ptrace),
+                           SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev), SCMP_SYS(pidfd_open),
+                           SCMP_SYS(pidfd_getfd), SCMP_SYS(kcmp), SCMP_SYS(memfd_create), SCMP_SYS(memfd_secret)})
         bad |= seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), call, 0);
     // clone's flags (argument 0) without CLONE_THREAD. Spelled out, not with SCMP_A0: that macro is
     // a C99 compound literal, which C++ compilers with -Wpedantic refuse.
