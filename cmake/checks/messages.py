@@ -41,13 +41,15 @@ BARE = re.compile(rf"^\s*[(\[]?\s*{NUMBER}(?:\s*[,; ]\s*{NUMBER})*\s*[)\]]?\s*$"
 # graders' named constants.
 SPELLED = {"rigid", "Vec3", "Mat3", "VecX", "MatX", "UnitX", "UnitY", "UnitZ", "Zero", "Identity", "Ones",
            "nan_", "inf_", "tiny_", "pi", "std", "numbers", "numeric_limits", "double", "quiet_NaN", "infinity",
-           "denorm_min", "min", "max", "lowest", "epsilon", "void", "checks", "Eigen", "true", "false", "e"}
+           "denorm_min", "min", "max", "lowest", "epsilon", "void", "checks", "Eigen", "true", "false", "e",
+           "message_of", "find", "string", "npos", "size", "invalid_argument", "asDiagonal", "toDenseMatrix",
+           "nextafter", "sqrt", "pow"}
 IDENT = re.compile(r"[A-Za-z_]\w*")
 
 
 def spelled(expression):
     """Whether a check's expression spells its inputs: an API call on literals and named constants."""
-    if not re.match(r"^\(?\s*(\(void\))?\s*rigid::", expression):
+    if "rigid::" not in expression:
         return False
     text = re.sub(r'"(?:[^"\\]|\\.)*"', '""', expression)
     calls = {m.group(1) for m in re.finditer(r"rigid::(\w+)\s*\(", text)}
@@ -141,14 +143,15 @@ def read_baseline(path):
     return listed
 
 
-def judge(found, baseline_path, scope=None):
-    """Compares the offending tests with the baseline; returns the exit status."""
+def judge(found, baseline_path, stale=True):
+    """Compares the offending tests with the baseline (and, with `stale`, finds listed tests that no
+    longer offend: only a run that reads every check can); returns the exit status."""
     offenders = {}
     for topic, test, where, why in found:
         offenders.setdefault((topic, test), []).append(f"{where}: {why}")
     baseline = read_baseline(baseline_path)
     new = [k for k in offenders if k not in baseline]
-    fixed = [k for k in baseline if k not in offenders and (scope is None or k in scope)]
+    fixed = [k for k in baseline if k not in offenders] if stale else []
     for key in new:
         topic, test = key
         print(f"FAILED: a failing check of {topic}'s test \"{test}\" does not show its inputs "
@@ -243,7 +246,9 @@ def planted(args):
         found += read_results(work / "checks" / mid / "results.json", topic, exercise)
     print(f"{len(chosen)} exercises, a planted wrong answer each: {shown} caught by a failing test "
           f"(the rest equivalent or not compiling)")
-    return judge(found, pathlib.Path(args.baseline))
+    # A planted answer reaches some checks of a test, not all: a listed test it does not show offending
+    # may still offend elsewhere (the check above reads every check).
+    return judge(found, pathlib.Path(args.baseline), stale=False)
 
 
 # ---- The self-test: planted messages, each of which must be flagged. ----
