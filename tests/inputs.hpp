@@ -10,8 +10,9 @@
 // Each input is named as the grader spells it; UNIT(x, "unit") adds its unit. Numbers are written
 // with the fewest digits that give back the same double (std::to_chars: 0.1 is 0.1, and every
 // digit of 0.30000000000000004 is kept), vectors as (x, y, z), matrices row by row as
-// [[a, b], [c, d]], lists as [u, v, ...]. A type of the API is shown by its fields: name them
-// (INPUTS(p.a, p.alpha)), or give it a checks::Show<T> of its own in the grader.
+// [[a, b], [c, d]], lists as [u, v, ...]. A struct of the API that several graders pass is shown by
+// its fields, with their units (below: BodyState, RegularPrecession, HeavyTop); another is shown by a
+// checks::Show<T> of its grader's own, or by naming its fields (INPUTS(p.a, p.alpha)).
 // The test suite reads every grader's failure messages and fails on a failing check without an
 // inputs line (cmake/checks/messages.py; tests/README.md, "Failure messages").
 #pragma once
@@ -28,6 +29,9 @@
 #include <string_view>
 #include <type_traits>
 #include <vector>
+
+#include "rigid/heavy_top.hpp"  // HeavyTop, and RegularPrecession of rigid/precession.hpp
+#include "rigid/ode.hpp"        // BodyState
 
 namespace checks {
 
@@ -115,6 +119,26 @@ void show_fields(std::ostream& s, const T&... names_and_values) {
     ((s << (k % 2 ? " = " : k ? ", " : ""), show(s, names_and_values), ++k), ...);
     s << "}";
 }
+
+// The API's structs that several graders pass.
+template <>
+struct Show<rigid::RegularPrecession> {
+    static void to(std::ostream& s, const rigid::RegularPrecession& p) {
+        show_fields(s, "a", p.a, "alpha", with_unit(p.alpha, "rad/s"), "b", p.b, "beta", with_unit(p.beta, "rad/s"));
+    }
+};
+template <>
+struct Show<rigid::BodyState> {
+    static void to(std::ostream& s, const rigid::BodyState& x) {
+        show_fields(s, "Omega", with_unit(x.Omega, "rad/s"), "R", x.R);
+    }
+};
+template <>
+struct Show<rigid::HeavyTop> {
+    static void to(std::ostream& s, const rigid::HeavyTop& top) {
+        show_fields(s, "J", with_unit(top.J, "kg·m²"), "f", with_unit(top.f, "kg·m²/s²"), "k", top.k, "z0", top.z0);
+    }
+};
 
 namespace inputs {
 

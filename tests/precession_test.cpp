@@ -17,14 +17,6 @@ using rigid::RegularPrecession;
 using rigid::Vec3;
 using std::numbers::pi;
 
-// A precession in a failure message: its axes and frequencies.
-template <>
-struct checks::Show<RegularPrecession> {
-    static void to(std::ostream& s, const RegularPrecession& p) {
-        show_fields(s, "a", p.a, "alpha", with_unit(p.alpha, "rad/s"), "b", p.b, "beta", with_unit(p.beta, "rad/s"));
-    }
-};
-
 namespace {
 
 Mat3 angle_axis(const Vec3& a, double phi) { return Eigen::AngleAxisd(phi, a.normalized()).toRotationMatrix(); }

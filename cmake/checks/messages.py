@@ -58,7 +58,7 @@ def spelled(expression):
         if word in SPELLED or word in calls or re.fullmatch(r"\d*e\d*", word):
             continue
         before = text[max(0, m.start() - 2):m.start()]
-        if before == "::" or re.match(r"\d", text[m.start() - 1:m.start()] or "x"):
+        if before == "::" or before.endswith(".") or re.match(r"\d", text[m.start() - 1:m.start()] or "x"):
             continue
         return False
     return True
