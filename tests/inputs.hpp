@@ -134,6 +134,13 @@ struct Show<rigid::BodyState> {
     }
 };
 template <>
+struct Show<rigid::OdeSettings> {
+    static void to(std::ostream& s, const rigid::OdeSettings& o) {
+        show_fields(s, "method", o.method, "rel_tol", o.rel_tol, "abs_tol", o.abs_tol, "first_step",
+                    with_unit(o.first_step, "s"), "max_steps", o.max_steps, "compensated_time", o.compensated_time);
+    }
+};
+template <>
 struct Show<rigid::HeavyTop> {
     static void to(std::ostream& s, const rigid::HeavyTop& top) {
         show_fields(s, "J", with_unit(top.J, "kg·m²"), "f", with_unit(top.f, "kg·m²/s²"), "k", top.k, "z0", top.z0);
