@@ -300,9 +300,6 @@ TEST_SUITE("ch05_grioli_precession") {
             INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
             INPUTS(m);
-            CAPTURE(g.A);
-            CAPTURE(g.BA);
-            CAPTURE(g.CB);
             CHECK_REL(rigid::grioli_root(m), S_ld(g), 4e-15);
             // [P, (4.5)]: f / alpha^2 = sqrt(I_(3-2) I_(2-1) + (I_(3-2) + I_1)^2) with I = (A, B, C).
             const double I32 = m.C - m.B, I21 = m.B - m.A;
@@ -650,10 +647,6 @@ TEST_SUITE("ch05_grioli_precession") {
             INPUTS(UNIT(f, "kg·m²/s²"));
             const rigid::GrioliPrecession p = precession_here(m, f, random_sense());
             INPUTS(p);
-            CAPTURE(m.A);
-            CAPTURE(m.B);
-            CAPTURE(m.C);
-            CAPTURE(f);
             const rigid::HeavyTop top = rigid::grioli_top(m, p);
             CHECK_MAT_NEAR(top.J, Vec3(m.A, m.B, m.C).asDiagonal().toDenseMatrix(), 0.0);
             CHECK(top.f == f);
@@ -708,7 +701,7 @@ TEST_SUITE("ch05_grioli_precession") {
             const rigid::BodyState s = random_state();
             INPUTS(s);
             const rigid::BodyState d = rigid::euler_poisson_rhs_gaps(m, f, k, z0, s);
-            CAPTURE(n);
+            INFO("the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps)");
             CHECK_SMALL(euler_error_in_eps(d, euler_reference(m, f, k, z0, s)), 80);
             CHECK_MAT_NEAR(d.R, s.R * skew(s.Omega), 1e-15 * s.Omega.norm());
         }
@@ -727,8 +720,10 @@ TEST_SUITE("ch05_grioli_precession") {
                 const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
                 INPUTS(k, z0);
                 INFO(differences_in_double(m));
-                INFO("the largest error of Omega_dot, in eps of each component's terms, at Omega = "
-                     << s.Omega.transpose() << ", f = 2");
+                INFO(
+                    "the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps), at "
+                    "Omega = "
+                    << s.Omega.transpose() << ", f = 2");
                 CHECK_SMALL(euler_error_in_eps(rigid::euler_poisson_rhs_gaps(m, 2.0, k, z0, s),
                                                euler_reference(m, 2.0, k, z0, s)),
                             80);
@@ -752,8 +747,10 @@ TEST_SUITE("ch05_grioli_precession") {
                 const double f = 1e-12;
                 INPUTS(UNIT(f, "kg·m²/s²"));
                 INFO(differences_in_double(m));
-                INFO("the largest error of Omega_dot, in eps of each component's terms, at Omega = "
-                     << s.Omega.transpose() << ", f = " << f);
+                INFO(
+                    "the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps), at "
+                    "Omega = "
+                    << s.Omega.transpose() << ", f = " << f);
                 CHECK_SMALL(
                     euler_error_in_eps(rigid::euler_poisson_rhs_gaps(m, f, k, z0, s), euler_reference(m, f, k, z0, s)),
                     80);
