@@ -43,7 +43,7 @@ SPELLED = {"rigid", "Vec3", "Mat3", "VecX", "MatX", "UnitX", "UnitY", "UnitZ", "
            "nan_", "inf_", "tiny_", "pi", "std", "numbers", "numeric_limits", "double", "quiet_NaN", "infinity",
            "denorm_min", "min", "max", "lowest", "epsilon", "void", "checks", "Eigen", "true", "false", "e",
            "message_of", "find", "string", "npos", "size", "invalid_argument", "asDiagonal", "toDenseMatrix",
-           "nextafter", "next_up", "sqrt", "pow"}
+           "nextafter", "next_up", "sqrt", "pow", "abs"}
 IDENT = re.compile(r"[A-Za-z_]\w*")
 
 
