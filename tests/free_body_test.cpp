@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "checks.hpp"
+#include "inputs.hpp"
 #include "rigid/free_body_exact.hpp"
 #include "rigid/ode.hpp"
 
@@ -39,7 +40,8 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE("euler_rhs: equals Euler's equations written by components") {
         for (int n = 0; n < 20; ++n) {
             const Vec3 I = random_moments(), w = checks::random_vector(3);
-            CAPTURE(I.transpose());
+            INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
+            INPUTS(UNIT(I, "kg·m²"));
             const Vec3 expected((I(1) - I(2)) * w(1) * w(2) / I(0), (I(2) - I(0)) * w(2) * w(0) / I(1),
                                 (I(0) - I(1)) * w(0) * w(1) / I(2));
             CHECK_MAT_NEAR(rigid::euler_rhs(I, w), expected, 1e-14);
@@ -48,6 +50,7 @@ TEST_SUITE("ch03_free_body") {
 
     TEST_CASE("euler_rhs: vanishes along principal axes and keeps Omega3 of a symmetric body") {
         const Vec3 I(1.0, 2.0, 2.5);
+        INPUTS(UNIT(I, "kg·m²"));
         for (int k = 0; k < 3; ++k) CHECK_MAT_NEAR(rigid::euler_rhs(I, 1.7 * Vec3::Unit(k)), Vec3::Zero(), 0.0);
         const Vec3 d = rigid::euler_rhs(Vec3(1.5, 1.5, 2.0), Vec3(0.3, -0.8, 1.1));
         CHECK_SMALL(std::abs(d(2)), 1e-16);
@@ -57,7 +60,9 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE("poisson_rhs: equals -eps_jkm Omega_k R_im of (6.8)") {
         for (int n = 0; n < 10; ++n) {
             const Mat3 R = random_rotation();
+            INPUTS(R);
             const Vec3 w = checks::random_vector(2);
+            INPUTS(UNIT(w, "rad/s"));
             Mat3 expected = Mat3::Zero();
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j)
@@ -70,15 +75,20 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE("poisson_rhs: moves every body vector with the velocity omega x x") {
         // d/dt (R x_body) = R (Omega x x_body) = omega x (R x_body), omega = R Omega.
         const Mat3 R = random_rotation();
+        INPUTS(R);
         const Vec3 w = checks::random_vector(2), x = checks::random_vector(1);
+        INPUTS(UNIT(w, "rad/s"), x);
         CHECK_MAT_NEAR(rigid::poisson_rhs(R, w) * x, (R * w).cross(R * x), 1e-14);
     }
 
     TEST_CASE("free_body_equations: packs (6.7) and (6.8) in the documented layout") {
         const Vec3 I = random_moments(), w = checks::random_vector(2);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
         const Mat3 R = random_rotation();
+        INPUTS(R);
         const rigid::OdeRhs f = rigid::free_body_equations(I);
         VecX y(12);
+        INPUTS(y);
         y << w, R.row(0).transpose(), R.row(1).transpose(), R.row(2).transpose();
         const VecX d = f(0.3, y);
         REQUIRE(d.size() == 12);
@@ -91,8 +101,9 @@ TEST_SUITE("ch03_free_body") {
 
     TEST_CASE("free_body_equations: integrated by rk8pd it follows the exact elliptic motion") {
         for (const Vec3& w0 : {Vec3(0.3, -2.0, 0.5), Vec3(1.2, 0.4, -0.9), Vec3(0.01, 3.0, 0.02)}) {
-            CAPTURE(w0.transpose());
+            INPUTS(UNIT(w0, "rad/s"));
             const Vec3 I(1.0, 2.0, 2.6);
+            INPUTS(UNIT(I, "kg·m²"));
             const auto times = rigid::linspace(0, 8, 16);
             const auto exact = rigid::free_body_motion(I, w0);
             const auto R_ex = rigid::free_body_exact_rotations(exact, times);
@@ -119,29 +130,39 @@ TEST_SUITE("ch03_free_body") {
         CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, nan_, 2)), std::invalid_argument);
         CHECK_THROWS_AS(rigid::free_body_equations(Vec3(1, 2, inf_)), std::invalid_argument);
         // I1 + I2 = I3 is a flat body: admissible, and its equations work.
-        const rigid::OdeRhs f = rigid::free_body_equations(Vec3(1, 2, 3));
-        const VecX d = f(0.0, rigid::pack({Vec3(1, 1, 1), Mat3::Identity()}));
+        const Vec3 I(1, 2, 3), Omega(1, 1, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(Omega, "rad/s"));
+        INFO("the right-hand side at t = 0 and R = 1");
+        const rigid::OdeRhs f = rigid::free_body_equations(I);
+        const VecX d = f(0.0, rigid::pack({Omega, Mat3::Identity()}));
         CHECK_NEAR(d(0), (2.0 - 3.0) / 1.0, 1e-15);
     }
 
     TEST_CASE("rotational_energy: is half of Omega . I Omega") {
         for (int n = 0; n < 10; ++n) {
             const Vec3 I = random_moments(), w = checks::random_vector(3);
+            INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
             CHECK_NEAR(rigid::rotational_energy(I, w), 0.5 * w.dot(I.asDiagonal() * w), 1e-14);
         }
-        CHECK_NEAR(rigid::rotational_energy(Vec3(1, 2, 3), Vec3(1, 1, 1)), 3.0, 0.0);
+        const Vec3 I(1, 2, 3), w(1, 1, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
+        CHECK_NEAR(rigid::rotational_energy(I, w), 3.0, 0.0);
     }
 
     TEST_CASE("angular_momentum_squared: is |I Omega|^2") {
         for (int n = 0; n < 10; ++n) {
             const Vec3 I = random_moments(), w = checks::random_vector(3);
+            INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
             CHECK_NEAR(rigid::angular_momentum_squared(I, w), (I.asDiagonal() * w).squaredNorm(), 1e-13);
         }
-        CHECK_NEAR(rigid::angular_momentum_squared(Vec3(1, 2, 3), Vec3(1, 1, 1)), 14.0, 0.0);
+        const Vec3 I(1, 2, 3), w(1, 1, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(w, "rad/s"));
+        CHECK_NEAR(rigid::angular_momentum_squared(I, w), 14.0, 0.0);
     }
 
     TEST_CASE("rotational_energy: both integrals of (6.9) are constant along the exact motion") {
         const Vec3 I(1.0, 1.7, 2.2), w0(0.8, -0.6, 1.4);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(w0, "rad/s"));
         const auto mo = rigid::free_body_motion(I, w0);
         const double E0 = rigid::rotational_energy(I, w0), M0 = (I.asDiagonal() * w0).squaredNorm();
         for (double t : {0.5, 7.0, 60.0}) {
@@ -187,11 +208,14 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE("wobble_frequency_squared: equals -lambda^2 of Euler's equation linearised about the spin") {
         for (int n = 0; n < 30; ++n) {
             const Vec3 I = random_moments();
+            INPUTS(UNIT(I, "kg·m²"));
             const int axis = n % 3;
+            INPUTS(axis);
             const double spin = checks::uniform(-3, 3);
-            CAPTURE(I.transpose());
-            CAPTURE(axis);
-            CAPTURE(spin);
+            INPUTS(UNIT(spin, "rad/s"));
+            INPUTS(UNIT(I, "kg·m²"));
+            INPUTS(axis);
+            INPUTS(UNIT(spin, "rad/s"));
             const double expected = nu_squared_from_jacobian(I, axis, spin);
             CHECK_NEAR(rigid::wobble_frequency_squared(I, axis, spin), expected, 1e-10 * spin * spin);
         }
@@ -200,6 +224,7 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE(
         "wobble_frequency_squared: stable about the largest and smallest axes and unstable about the middle one") {
         const Vec3 I(1.0, 2.0, 3.0);
+        INPUTS(UNIT(I, "kg·m²"));
         CHECK(rigid::wobble_frequency_squared(I, 0, 1.0) > 0.1);
         CHECK(rigid::wobble_frequency_squared(I, 2, 1.0) > 0.1);
         CHECK(rigid::wobble_frequency_squared(I, 1, 1.0) < -0.1);
@@ -232,15 +257,21 @@ TEST_SUITE("ch03_free_body") {
 // The worked example of the chapter, number by number, as the prose states it.
 TEST_SUITE("ch03_free_body") {
     TEST_CASE("rotational_energy: E = 3 for I = (2; 3; 4) and Omega = (1; 0; 1) in the worked example of Chapter 3") {
-        CHECK_NEAR(rigid::rotational_energy(Vec3(2, 3, 4), Vec3(1, 0, 1)), 3.0, 1e-15);
+        const Vec3 I(2, 3, 4), Omega(1, 0, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(Omega, "rad/s"));
+        CHECK_NEAR(rigid::rotational_energy(I, Omega), 3.0, 1e-15);
     }
 
     TEST_CASE("angular_momentum_squared: M^2 = 20 in the worked example of Chapter 3") {
-        CHECK_NEAR(rigid::angular_momentum_squared(Vec3(2, 3, 4), Vec3(1, 0, 1)), 20.0, 1e-14);
+        const Vec3 I(2, 3, 4), Omega(1, 0, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(Omega, "rad/s"));
+        CHECK_NEAR(rigid::angular_momentum_squared(I, Omega), 20.0, 1e-14);
     }
 
     TEST_CASE("euler_rhs: dOmega/dt = (0; 2/3; 0) in the worked example of Chapter 3") {
-        CHECK_MAT_NEAR(rigid::euler_rhs(Vec3(2, 3, 4), Vec3(1, 0, 1)), Vec3(0, 2.0 / 3, 0), 1e-15);
+        const Vec3 I(2, 3, 4), Omega(1, 0, 1);
+        INPUTS(UNIT(I, "kg·m²"), UNIT(Omega, "rad/s"));
+        CHECK_MAT_NEAR(rigid::euler_rhs(I, Omega), Vec3(0, 2.0 / 3, 0), 1e-15);
     }
 
 }  // TEST_SUITE
@@ -273,12 +304,14 @@ TEST_SUITE("ch03_free_body") {
     TEST_CASE(
         "free_body_equations: rejects moments just across each rule and accepts the flat body and a tiny moment") {
         for (const Vec3& I : bad_moments()) {
-            CAPTURE(I.transpose());
+            INPUTS(UNIT(I, "kg·m²"));
             CHECK_THROWS_AS(rigid::free_body_equations(I), std::invalid_argument);
         }
         // The triangle inequality with equality, in each position, is a flat body: accepted.
         const VecX y = rigid::pack({Vec3(1, 1, 1), Mat3::Identity()});
         for (const Vec3& I : {Vec3(1, 2, 3), Vec3(3, 1, 2), Vec3(2, 3, 1)}) {
+            INPUTS(UNIT(I, "kg·m²"));
+            INFO("the right-hand side at t = 0, Omega = (1, 1, 1) rad/s and R = 1");
             const VecX d = rigid::free_body_equations(I)(0.0, y);
             CHECK_MAT_NEAR(d.head<3>(), Vec3((I(1) - I(2)) / I(0), (I(2) - I(0)) / I(1), (I(0) - I(1)) / I(2)), 1e-15);
         }
@@ -288,13 +321,20 @@ TEST_SUITE("ch03_free_body") {
 
     TEST_CASE(
         "wobble_frequency_squared: rejects moments or an axis or a spin just across each rule and accepts the edges") {
-        for (const Vec3& I : bad_moments())
+        for (const Vec3& I : bad_moments()) {
+            INPUTS(UNIT(I, "kg·m²"));
             CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, 0, 1.0), std::invalid_argument);
+        }
         const Vec3 I(1, 2, 3);  // flat: accepted
-        for (int axis : {-1, 3})
+        INPUTS(UNIT(I, "kg·m²"));
+        for (int axis : {-1, 3}) {
+            INPUTS(axis);
             CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, axis, 1.0), std::invalid_argument);
-        for (double spin : {nan_, inf_, -inf_})
+        }
+        for (double spin : {nan_, inf_, -inf_}) {
+            INPUTS(UNIT(spin, "rad/s"));
             CHECK_THROWS_AS((void)rigid::wobble_frequency_squared(I, 1, spin), std::invalid_argument);
+        }
         // The first and last axis, a spin of 0 and a negative spin are all valid. About axis k,
         // nu^2 = spin^2 (I_k - I_i)(I_k - I_j) / (I_i I_j).
         CHECK_NEAR(rigid::wobble_frequency_squared(I, 0, 2.0), 4.0 * (1 - 2) * (1 - 3) / (2 * 3), 1e-15);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "checks.hpp"
+#include "inputs.hpp"
 #include "reference/quad_inertia.hpp"
 
 using rigid::Mat3;
@@ -44,6 +45,37 @@ rigid::Moments from_moments(double A, double B, double C) { return {A, B, C, B -
 struct Gaps {
     double A, BA, CB;
 };
+}  // namespace
+
+// Moments, gaps, a sense and a precession in a failure message.
+template <>
+struct checks::Show<Gaps> {
+    static void to(std::ostream& s, const Gaps& g) {
+        show_fields(s, "A", g.A, "B - A", g.BA, "C - B", g.CB);
+        s << " kg·m²";
+    }
+};
+template <>
+struct checks::Show<rigid::Moments> {
+    static void to(std::ostream& s, const rigid::Moments& m) {
+        show_fields(s, "A", m.A, "B", m.B, "C", m.C, "B_minus_A", m.B_minus_A, "C_minus_B", m.C_minus_B);
+        s << " kg·m²";
+    }
+};
+template <>
+struct checks::Show<Sense> {
+    static void to(std::ostream& s, Sense x) { s << (x == Sense::ccw ? "ccw (sigma = +1)" : "cw (sigma = -1)"); }
+};
+template <>
+struct checks::Show<rigid::GrioliPrecession> {
+    static void to(std::ostream& s, const rigid::GrioliPrecession& p) {
+        show_fields(s, "sense", p.sense, "f", with_unit(p.f, "kg·m²/s²"), "alpha", with_unit(p.alpha, "rad/s"), "theta",
+                    with_unit(p.theta, "rad"), "a", p.a, "b", p.b, "k", p.k, "z0", p.z0);
+    }
+};
+
+namespace {
+
 Gaps random_gaps() {
     const double A = checks::uniform(0.5, 2), BA = checks::uniform(0.01, 1.5), CB = checks::uniform(0.01, 1) * A;
     return {A, BA, CB};
@@ -126,10 +158,8 @@ const Gaps far_bodies[] = {
 // What m.C - m.B and m.B - m.A come to in double for such a body: shown beside a failure.
 std::string differences_in_double(const rigid::Moments& m) {
     std::ostringstream s;
-    s << "the body A = " << m.A << ", B - A = " << m.B_minus_A << ", C - B = " << m.C_minus_B;
     s.precision(17);
-    s << " (in double B = " << m.B << ", C = " << m.C << ", so m.C - m.B = " << m.C - m.B
-      << ", m.B - m.A = " << m.B - m.A << " and m.C - m.A = " << m.C - m.A << ")";
+    s << "in double m.C - m.B = " << m.C - m.B << ", m.B - m.A = " << m.B - m.A << " and m.C - m.A = " << m.C - m.A;
     return s.str();
 }
 
@@ -192,7 +222,9 @@ rigid::BodyState random_state() {
 
 TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("moments: keeps A B C and the gaps B - A and C - B") {
-        const rigid::Moments m = rigid::moments(1.0, 1.5, 2.25);
+        const double A = 1.0, B = 1.5, C = 2.25;
+        INPUTS(UNIT(A, "kg·m²"), UNIT(B, "kg·m²"), UNIT(C, "kg·m²"));
+        const rigid::Moments m = rigid::moments(A, B, C);
         CHECK(m.A == 1.0);
         CHECK(m.B == 1.5);
         CHECK(m.C == 2.25);
@@ -206,6 +238,7 @@ TEST_SUITE("ch05_grioli_precession") {
         for (int n = 0; n < 20; ++n) {
             const double A = checks::uniform(0.1, 10), B = A * checks::uniform(1.01, 2),
                          C = B + A * checks::uniform(0.01, 1);
+            INPUTS(UNIT(A, "kg·m²"), UNIT(B, "kg·m²"), UNIT(C, "kg·m²"));
             const rigid::Moments m = rigid::moments(A, B, C);
             CHECK(m.A == A);
             CHECK(m.B == B);
@@ -227,7 +260,9 @@ TEST_SUITE("ch05_grioli_precession") {
     }
 
     TEST_CASE("moments_from_gaps: keeps the gaps exactly as given") {
-        const rigid::Moments m = rigid::moments_from_gaps(1.0, 1e-9, 0.7);
+        const double A = 1.0, B_minus_A = 1e-9, C_minus_B = 0.7;
+        INPUTS(UNIT(A, "kg·m²"), UNIT(B_minus_A, "kg·m²"), UNIT(C_minus_B, "kg·m²"));
+        const rigid::Moments m = rigid::moments_from_gaps(A, B_minus_A, C_minus_B);
         CHECK(m.B_minus_A == 1e-9);
         CHECK(m.C_minus_B == 0.7);
         CHECK(m.A == 1.0);
@@ -241,6 +276,7 @@ TEST_SUITE("ch05_grioli_precession") {
         for (int n = 0; n < 20; ++n) {
             const double A = checks::uniform(0.1, 10), BA = A * std::pow(10.0, checks::uniform(-12, 0)),
                          CB = A * checks::uniform(0.01, 0.99);
+            INPUTS(UNIT(A, "kg·m²"), UNIT(BA, "kg·m²"), UNIT(CB, "kg·m²"));
             const rigid::Moments m = rigid::moments_from_gaps(A, BA, CB);
             CHECK(m.A == A);
             CHECK(m.B_minus_A == BA);
@@ -261,10 +297,9 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_root: equals the long double value and (4.5) in the notation I_(n-m)") {
         for (int n = 0; n < 50; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
-            CAPTURE(g.A);
-            CAPTURE(g.BA);
-            CAPTURE(g.CB);
+            INPUTS(m);
             CHECK_REL(rigid::grioli_root(m), S_ld(g), 4e-15);
             // [P, (4.5)]: f / alpha^2 = sqrt(I_(3-2) I_(2-1) + (I_(3-2) + I_1)^2) with I = (A, B, C).
             const double I32 = m.C - m.B, I21 = m.B - m.A;
@@ -275,6 +310,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_root: keeps its digits when B - A or C - B is 1e-9 of C - A") {
         for (Gaps g : {Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 1e-12, 1e-12}}) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             INFO(differences_in_double(m));
             CHECK_REL(rigid::grioli_root(m), S_ld(g), 4e-15);
         }
@@ -285,6 +321,7 @@ TEST_SUITE("ch05_grioli_precession") {
         // Moments hold it (the contract's rule). On the first body S = 1.2288...; m.C - m.B is 0.
         for (const Gaps& g : far_bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             INFO(differences_in_double(m));
             CHECK_REL(rigid::grioli_root(m), S_ld(g), 4e-15);
         }
@@ -293,10 +330,13 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_alpha: alpha^2 S = f for f from 1e-6 to 1e6") {
         ALSO_USES("grioli_root");
         const Gaps g = random_gaps();
+        INPUTS(g);
         const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+        INPUTS(m);
         for (double f : {1e-6, 1e-3, 1.0, 37.0, 1e6}) {
             const long double alpha = std::sqrt(static_cast<long double>(f) / S_ld(g));
-            INFO(differences_in_double(m) << ", f = " << f);
+            INPUTS(UNIT(f, "kg·m²/s²"));
+            INFO(differences_in_double(m));
             CHECK_REL(rigid::grioli_alpha(m, f), alpha, 4e-15);
         }
     }
@@ -305,8 +345,11 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root");
         for (const Gaps& g : far_bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = 9.81 * std::sqrt(g.BA);  // f = g L mu grows with L as sqrt(h)
-            INFO(differences_in_double(m) << ", f = " << f);
+            INPUTS(UNIT(f, "kg·m²/s²"));
+            INPUTS(UNIT(f, "kg·m²/s²"));
+            INFO(differences_in_double(m));
             CHECK_REL(rigid::grioli_alpha(m, f), std::sqrt(f / S_ld(g)), 4e-15);
         }
     }
@@ -314,6 +357,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_alpha: rejects f <= 0 and a non-finite f") {
         ALSO_USES("grioli_root");
         const rigid::Moments m = from_moments(1, 2, 2.5);
+        INPUTS(m);
         CHECK_THROWS_AS(rigid::grioli_alpha(m, 0.0), std::invalid_argument);
         CHECK_THROWS_AS(rigid::grioli_alpha(m, -1.0), std::invalid_argument);
         CHECK_THROWS_AS(rigid::grioli_alpha(m, nan_), std::invalid_argument);
@@ -325,6 +369,7 @@ TEST_SUITE("ch05_grioli_precession") {
         for (Gaps g :
              {random_gaps(), random_gaps(), Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 1e-12, 1e-12}}) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const long double A = g.A, BA = g.BA, CB = g.CB;
             const long double theta = std::atan2(std::sqrt(CB * BA), A + CB);
             INFO(differences_in_double(m));
@@ -341,6 +386,7 @@ TEST_SUITE("ch05_grioli_precession") {
         // sin theta = 1 - 2e-17 rounds to 1.
         for (const Gaps& g : far_bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const long double A = g.A, BA = g.BA, CB = g.CB;
             INFO(differences_in_double(m));
             CHECK_REL(rigid::grioli_theta(m), std::atan2(std::sqrt(CB) * std::sqrt(BA), A + CB), 1e-15);
@@ -350,7 +396,9 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_rotation_vector: is the normal of a circular section of the inertia ellipsoid") {
         for (int n = 0; n < 20; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const Vec3 a = rigid::grioli_rotation_vector(m);
             CHECK_NEAR(a.norm(), 1.0, 2e-15);
             CHECK(a.x() > 0);
@@ -370,6 +418,7 @@ TEST_SUITE("ch05_grioli_precession") {
         // C - A = (B - A) + (C - B) from the gaps: m.C - m.A keeps only 7 digits of 3e-9 or 2e-12.
         for (Gaps g : {Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 1e-9, 2e-9}, Gaps{1.0, 1e-12, 1e-12}}) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const long double CA = static_cast<long double>(g.BA) + g.CB;
             const Vec3 a = rigid::grioli_rotation_vector(m);
             INFO(differences_in_double(m));
@@ -382,6 +431,7 @@ TEST_SUITE("ch05_grioli_precession") {
         "grioli_rotation_vector: keeps its digits far out on a Grioli line where C - B is below the rounding of B") {
         for (const Gaps& g : far_bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const long double CA = static_cast<long double>(g.BA) + g.CB;
             const Vec3 a = rigid::grioli_rotation_vector(m);
             INFO(differences_in_double(m));
@@ -394,6 +444,7 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root, grioli_rotation_vector, grioli_theta");
         for (Gaps g : {random_gaps(), random_gaps(), Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}, Gaps{1.0, 0.5, 1.0}}) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const Vec3 k = rigid::grioli_vertical(m), a = rigid::grioli_rotation_vector(m);
             CHECK_NEAR(k.norm(), 1.0, 3e-15);
             CHECK_NEAR(k.dot(a), 0.0, 1e-15);
@@ -407,8 +458,11 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root, grioli_alpha, grioli_rotation_vector");
         for (int n = 0; n < 20; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = checks::uniform(0.1, 10);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const Vec3 a = rigid::grioli_rotation_vector(m), k = rigid::grioli_vertical(m);
             const double alpha = rigid::grioli_alpha(m, f);
             const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
@@ -427,6 +481,7 @@ TEST_SUITE("ch05_grioli_precession") {
             bodies.push_back(g);
         for (const Gaps& g : bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const long double A = g.A, BA = g.BA, CB = g.CB, CA = BA + CB, S = S_ld(g);
             const Vec3 k = rigid::grioli_vertical(m);
             INFO(differences_in_double(m));
@@ -439,6 +494,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_precession: both senses share alpha theta a b k and z0 = a") {
         ALSO_USES(GRIOLI_PRECESSION_PARTS);
         const rigid::Moments m = from_moments(1.0, 1.6, 2.3);
+        INPUTS(m);
         const rigid::GrioliPrecession p = rigid::grioli_precession(m, 2.0, Sense::ccw);
         const rigid::GrioliPrecession q = rigid::grioli_precession(m, 2.0, Sense::cw);
         CHECK(p.sense == Sense::ccw);
@@ -458,8 +514,11 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES(GRIOLI_PRECESSION_PARTS);
         for (int n = 0; n < 20; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = checks::uniform(0.1, 10);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
             for (Sense s : {Sense::ccw, Sense::cw}) {
                 const rigid::GrioliPrecession p = rigid::grioli_precession(m, f, s);
@@ -475,10 +534,13 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES(GRIOLI_PRECESSION_PARTS);
         for (const Gaps& g : far_bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = 9.81 * std::sqrt(g.BA);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const rigid::GrioliPrecession e = precession_here(m, f, Sense::cw);
             const rigid::GrioliPrecession p = rigid::grioli_precession(m, f, Sense::cw);
-            INFO(differences_in_double(m) << ", f = " << f);
+            INPUTS(UNIT(f, "kg·m²/s²"));
+            INFO(differences_in_double(m));
             CHECK_REL(p.alpha, e.alpha, 4e-15);
             CHECK_REL(p.theta, e.theta, 2e-15);
             {
@@ -498,8 +560,10 @@ TEST_SUITE("ch05_grioli_precession") {
 
     TEST_CASE("grioli_rotation: is R^b(sigma alpha t) R^a(sigma alpha t) and returns to 1 after a period") {
         const rigid::Moments m = from_moments(1.0, 1.4, 2.1);
+        INPUTS(m);
         for (Sense s : {Sense::ccw, Sense::cw}) {
             const rigid::GrioliPrecession p = precession_here(m, 1.5, s);
+            INPUTS(p);
             INFO("the precession of the body (1, 1.4, 2.1) with f = 1.5, alpha = " << p.alpha << ", sense " << name(s));
             for (double t : {0.0, 0.7, 3.1}) {
                 const double phi = sigma(s) * p.alpha * t;
@@ -514,9 +578,13 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_rotation: is R^b R^a for random bodies and f and senses and times (the graders' seed)") {
         for (int n = 0; n < 10; ++n) {
             const rigid::Moments m = random_moments();
+            INPUTS(m);
             const Sense s = random_sense();
+            INPUTS(s);
             const rigid::GrioliPrecession p = precession_here(m, checks::uniform(0.5, 3), s);
+            INPUTS(p);
             const double t = checks::uniform(0, 10 / p.alpha), phi = sigma(s) * p.alpha * t;
+            INPUTS(UNIT(t, "s"));
             INFO("the body (" << m.A << ", " << m.B << ", " << m.C << ") with f = " << p.f << ", alpha = " << p.alpha
                               << ", sense " << name(s) << "; grioli_rotation(p, t) at t = " << t
                               << " (sigma alpha t = " << phi << ")");
@@ -526,9 +594,12 @@ TEST_SUITE("ch05_grioli_precession") {
 
     TEST_CASE("grioli_angular_velocity: equals vee(R^T R') from a central difference of R(t)") {
         const rigid::Moments m = from_moments(1.0, 1.4, 2.1);
+        INPUTS(m);
         for (Sense s : {Sense::ccw, Sense::cw}) {
             const rigid::GrioliPrecession p = precession_here(m, 1.5, s);
+            INPUTS(p);
             const double h = 1e-5;
+            INPUTS(UNIT(h, "kg·m²"));
             for (double t : {0.0, 0.7, 3.1}) {
                 const Vec3 fd = unskew(rotation_here(p, t).transpose() *
                                        (rotation_here(p, t + h) - rotation_here(p, t - h)) / (2 * h));
@@ -543,9 +614,13 @@ TEST_SUITE("ch05_grioli_precession") {
         // R = R^b(phi) R^a(phi), phi = sigma alpha t: R^T R' = sigma alpha (hat(a) + R^a^T hat(b) R^a).
         for (int n = 0; n < 10; ++n) {
             const rigid::Moments m = random_moments();
+            INPUTS(m);
             const Sense s = random_sense();
+            INPUTS(s);
             const rigid::GrioliPrecession p = precession_here(m, checks::uniform(0.5, 3), s);
+            INPUTS(p);
             const double t = checks::uniform(0, 10 / p.alpha);
+            INPUTS(UNIT(t, "s"));
             INFO("the body (" << m.A << ", " << m.B << ", " << m.C << ") with f = " << p.f << ", alpha = " << p.alpha
                               << ", sense " << name(s) << "; grioli_angular_velocity(p, t) at t = " << t);
             CHECK_MAT_NEAR(rigid::grioli_angular_velocity(p, t), angular_velocity_here(p, t), 1e-13 * p.alpha);
@@ -554,7 +629,9 @@ TEST_SUITE("ch05_grioli_precession") {
 
     TEST_CASE("grioli_top: is diag(A B C) with the precession's f k and z0") {
         const rigid::Moments m = from_moments(1.0, 1.4, 2.1);
+        INPUTS(m);
         const rigid::GrioliPrecession p = precession_here(m, 1.5, Sense::ccw);
+        INPUTS(p);
         const rigid::HeavyTop top = rigid::grioli_top(m, p);
         CHECK_MAT_NEAR(top.J, Vec3(1.0, 1.4, 2.1).asDiagonal().toDenseMatrix(), 0.0);
         CHECK_NEAR(top.f, 1.5, 0.0);
@@ -565,12 +642,11 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_top: is diag(A B C) with f k z0 for random bodies (the graders' seed)") {
         for (int n = 0; n < 10; ++n) {
             const rigid::Moments m = random_moments();
+            INPUTS(m);
             const double f = checks::uniform(0.5, 3);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const rigid::GrioliPrecession p = precession_here(m, f, random_sense());
-            CAPTURE(m.A);
-            CAPTURE(m.B);
-            CAPTURE(m.C);
-            CAPTURE(f);
+            INPUTS(p);
             const rigid::HeavyTop top = rigid::grioli_top(m, p);
             CHECK_MAT_NEAR(top.J, Vec3(m.A, m.B, m.C).asDiagonal().toDenseMatrix(), 0.0);
             CHECK(top.f == f);
@@ -583,8 +659,10 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_initial_state: has R(0) = 1 and Omega(0) = sigma alpha (a + b)") {
         ALSO_USES("grioli_angular_velocity");
         const rigid::Moments m = from_moments(1.0, 1.4, 2.1);
+        INPUTS(m);
         for (Sense s : {Sense::ccw, Sense::cw}) {
             const rigid::GrioliPrecession p = precession_here(m, 1.5, s);
+            INPUTS(p);
             INFO("the body (1, 1.4, 2.1) with f = 1.5, alpha = " << p.alpha << ", sense " << name(s));
             const rigid::BodyState s0 = rigid::grioli_initial_state(p);
             CHECK_MAT_NEAR(s0.R, Mat3::Identity(), 0.0);
@@ -597,8 +675,11 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_angular_velocity");
         for (int n = 0; n < 10; ++n) {
             const Sense s = random_sense();
+            INPUTS(s);
             const rigid::Moments m = random_moments();
+            INPUTS(m);
             const rigid::GrioliPrecession p = precession_here(m, checks::uniform(0.5, 3), s);
+            INPUTS(p);
             INFO("the body (" << m.A << ", " << m.B << ", " << m.C << ") with f = " << p.f << ", alpha = " << p.alpha
                               << ", sense " << name(s));
             const rigid::BodyState s0 = rigid::grioli_initial_state(p);
@@ -610,12 +691,17 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("euler_poisson_rhs_gaps: is Euler's equations for J = diag(A B C) and Poisson's R_dot = R hat(Omega)") {
         for (int n = 0; n < 40; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = checks::uniform(0.1, 10);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
+            INPUTS(k, z0);
             const rigid::BodyState s = random_state();
+            INPUTS(s);
             const rigid::BodyState d = rigid::euler_poisson_rhs_gaps(m, f, k, z0, s);
-            CAPTURE(n);
+            INFO("the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps)");
             CHECK_SMALL(euler_error_in_eps(d, euler_reference(m, f, k, z0, s)), 80);
             CHECK_MAT_NEAR(d.R, s.R * skew(s.Omega), 1e-15 * s.Omega.norm());
         }
@@ -627,12 +713,17 @@ TEST_SUITE("ch05_grioli_precession") {
         // ulp of B, and B Omega_B Omega_C - C Omega_C Omega_B in double is round-off only.
         for (double h : {3e2, 3e5, 3e8}) {
             const rigid::Moments m = from_gaps(1.5, h, 0.5 / h);
+            INPUTS(m);
             for (int n = 0; n < 10; ++n) {
                 const rigid::BodyState s = random_state();
+                INPUTS(s);
                 const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
+                INPUTS(k, z0);
                 INFO(differences_in_double(m));
-                INFO("the largest error of Omega_dot, in eps of each component's terms, at Omega = "
-                     << s.Omega.transpose() << ", f = 2");
+                INFO(
+                    "the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps), at "
+                    "Omega = "
+                    << s.Omega.transpose() << ", f = 2");
                 CHECK_SMALL(euler_error_in_eps(rigid::euler_poisson_rhs_gaps(m, 2.0, k, z0, s),
                                                euler_reference(m, 2.0, k, z0, s)),
                             80);
@@ -647,13 +738,19 @@ TEST_SUITE("ch05_grioli_precession") {
         // keeps 7 digits of the gap: 1e8 eps or more of the component's terms.
         for (Gaps g : {Gaps{1.0, 1e-9, 2e-9}, Gaps{1.0, 1e-9, 0.8}, Gaps{1.0, 0.8, 1e-9}}) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             for (int n = 0; n < 10; ++n) {
                 const rigid::BodyState s = random_state();
+                INPUTS(s);
                 const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
+                INPUTS(k, z0);
                 const double f = 1e-12;
+                INPUTS(UNIT(f, "kg·m²/s²"));
                 INFO(differences_in_double(m));
-                INFO("the largest error of Omega_dot, in eps of each component's terms, at Omega = "
-                     << s.Omega.transpose() << ", f = " << f);
+                INFO(
+                    "the largest error of Omega_dot, in eps of each component's terms (the tolerance: 80 eps), at "
+                    "Omega = "
+                    << s.Omega.transpose() << ", f = " << f);
                 CHECK_SMALL(
                     euler_error_in_eps(rigid::euler_poisson_rhs_gaps(m, f, k, z0, s), euler_reference(m, f, k, z0, s)),
                     80);
@@ -671,7 +768,9 @@ TEST_SUITE("ch05_grioli_precession") {
         // precession, its start and its R(t) are written out here: only euler_poisson_rhs_gaps is yours.
         for (double h : {2.5e8, 2.5e16}) {
             const rigid::Moments m = from_gaps(1.5, h, 0.5 / h);
+            INPUTS(m);
             const rigid::GrioliPrecession p = precession_here(m, 9.81 * std::sqrt(h), Sense::ccw);
+            INPUTS(p);
             const double T = 100 * 2 * pi / p.alpha;
             double worst = 0;
             const rigid::OdeStats st = rigid::integrate_gsl(
@@ -695,9 +794,13 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_precession, " GRIOLI_PRECESSION_PARTS ", grioli_angular_velocity and item_II_rule_holds");
         for (int n = 0; n < 10; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const Vec3 up = checks::random_vector(2), toward = checks::random_unit();
+            INPUTS(up, toward);
             const Vec3 k = up.normalized();
+            INPUTS(k);
             const rigid::LabPlacement p = rigid::place_item_II(m, 1.0, Sense::ccw, up, toward);
             CHECK_NEAR((p.R0.transpose() * p.R0 - Mat3::Identity()).norm(), 0.0, 1e-13);
             CHECK_NEAR(p.R0.determinant(), 1.0, 1e-13);
@@ -716,7 +819,9 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("place_item_II: the placed body precesses regularly in the lab in both senses") {
         ALSO_USES("grioli_precession, " GRIOLI_PRECESSION_PARTS ", grioli_angular_velocity and item_II_rule_holds");
         const rigid::Moments m = from_moments(1.0, 1.7, 2.4);
+        INPUTS(m);
         const double f = 3.0;
+        INPUTS(UNIT(f, "kg·m²/s²"));
         for (Sense s : {Sense::ccw, Sense::cw}) {
             const rigid::LabPlacement p = rigid::place_item_II(m, f, s, Vec3(0.2, -0.3, 1.0), Vec3(1, 1, 0));
             const Mat3 J_lab = p.R0 * Vec3(m.A, m.B, m.C).asDiagonal() * p.R0.transpose();
@@ -735,7 +840,9 @@ TEST_SUITE("ch05_grioli_precession") {
         const Mat3 J = Vec3(m.A, m.B, m.C).asDiagonal();
         const Vec3 z = rigid::grioli_rotation_vector(m), uB = Vec3::UnitY();
         const double theta = rigid::grioli_theta(m), f = 1.0, alpha = rigid::grioli_alpha(m, f);
+        INPUTS(UNIT(f, "kg·m²/s²"));
         const Vec3 k = Vec3::UnitZ(), b(std::sin(theta), 0, std::cos(theta)), a = b.cross(k).normalized();
+        INPUTS(k);
         int accepted = 0;
         for (int s1 : {1, -1})
             for (int s2 : {1, -1}) {
@@ -745,11 +852,8 @@ TEST_SUITE("ch05_grioli_precession") {
                 const Mat3 R0 = lab * body.transpose();
                 const Mat3 J_lab = R0 * J * R0.transpose();
                 const bool precesses = euler_residual(J_lab, f, k, R0 * z, R0 * z, b, alpha) <= tol;
-                CAPTURE(m.A);
-                CAPTURE(m.B);
-                CAPTURE(m.C);
-                CAPTURE(s1);
-                CAPTURE(s2);
+                INPUTS(m, R0, k);
+                INFO("the placement with R_B along " << s1 << " b and z(0) along " << s2 << " a");
                 CHECK(rigid::item_II_rule_holds(m, R0, k) == precesses);
                 accepted += precesses;
             }
@@ -758,13 +862,18 @@ TEST_SUITE("ch05_grioli_precession") {
 
     TEST_CASE("item_II_rule_holds: accepts the two placements that precess and rejects the two that do not") {
         ALSO_USES("grioli_alpha, grioli_rotation_vector, grioli_theta");
-        CHECK(check_item_II_placements(from_moments(1.0, 1.5, 2.2), 1e-12) == 2);
+        const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
+        INFO("how many of the four placements your item_II_rule_holds accepts");
+        CHECK(check_item_II_placements(m, 1e-12) == 2);
     }
 
     TEST_CASE("item_II_rule_holds: tells the four placements of random bodies apart (the graders' seed)") {
         ALSO_USES("grioli_alpha, grioli_rotation_vector, grioli_theta");
         for (int n = 0; n < 5; ++n) {
             const rigid::Moments m = random_moments();
+            INPUTS(m);
+            INFO("how many of the four placements your item_II_rule_holds accepts");
             CHECK(check_item_II_placements(m, 1e-12 * m.C) == 2);
         }
     }
@@ -779,8 +888,10 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("integrate_grioli: follows Theorem 1 for 10 periods in both senses") {
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         for (Sense s : {Sense::ccw, Sense::cw}) {
             const rigid::GrioliPrecession p = precession_here(m, 2.0, s);
+            INPUTS(p);
             const rigid::PrecessionCheck c =
                 rigid::integrate_grioli(m, p, 10, 8, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
             INFO("the body (1, 1.5, 2.2) with f = 2, sense " << name(s) << ": 10 periods, 8 samples each, rk8pd 1e-12");
@@ -796,9 +907,13 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         for (int n = 0; n < 3; ++n) {
             const rigid::Moments m = random_moments();
+            INPUTS(m);
             const double f = checks::uniform(0.5, 3);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const Sense s = random_sense();
+            INPUTS(s);
             const rigid::GrioliPrecession p = precession_here(m, f, s);
+            INPUTS(p);
             const rigid::PrecessionCheck c =
                 rigid::integrate_grioli(m, p, 3, 8, {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
             INFO("the body (" << m.A << ", " << m.B << ", " << m.C << ") with f = " << f << ", sense " << name(s)
@@ -813,8 +928,11 @@ TEST_SUITE("ch05_grioli_precession") {
         "integrate_grioli: follows Theorem 1 for a body whose C - B is 1e-17 of B (Euler's equations on the gaps)") {
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         const double h = 2.5e16;
+        INPUTS(UNIT(h, "kg·m²"));
         const rigid::Moments m = from_gaps(1.5, h, 0.5 / h);
+        INPUTS(m);
         const rigid::GrioliPrecession p = precession_here(m, 1e9, Sense::cw);
+        INPUTS(p);
         // The gap form takes about 7 steps between samples; max_steps stops within milliseconds an
         // integration of the subtracting form (m.B - m.C is 0 here), which ran for more than 13
         // minutes (measured, then stopped) without it.
@@ -828,7 +946,9 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("integrate_grioli: measures the departure of a state that does not precess") {
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         rigid::GrioliPrecession p = precession_here(m, 2.0, Sense::ccw);
+        INPUTS(p);
         p.k = Rot(Vec3::UnitX(), 0.05) * p.k;  // the wrong vertical
         const rigid::PrecessionCheck c =
             rigid::integrate_grioli(m, p, 3, 8, {.method = "rk8pd", .rel_tol = 1e-10, .abs_tol = 1e-10});
@@ -845,11 +965,14 @@ TEST_SUITE("ch05_grioli_precession") {
         // rk8pd and compared with R(t) and Omega(t) of Theorem 1 (by Eigen's AngleAxis) at the
         // times the header names, linspace(0, periods 2 pi / alpha, n).
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         rigid::GrioliPrecession p = precession_here(m, 2.0, Sense::cw);
+        INPUTS(p);
         p.k = Rot(Vec3(1, 2, 0).normalized(), 0.02) * p.k;
         const Vec3 J(m.A, m.B, m.C);
         for (auto [periods, per] : {std::pair{2.5, 3}, std::pair{0.4, 1}}) {
             const rigid::OdeSettings set{.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12};
+            INPUTS(set);
             const rigid::PrecessionCheck c = rigid::integrate_grioli(m, p, periods, per, set);
             const int n = static_cast<int>(std::ceil(periods * per));
             double rotation = 0, omega = 0;
@@ -884,7 +1007,9 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("integrate_grioli: gives an implicit method the Jacobian") {
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         const rigid::GrioliPrecession p = precession_here(m, 2.0, Sense::cw);
+        INPUTS(p);
         const rigid::PrecessionCheck c =
             rigid::integrate_grioli(m, p, 2, 4, {.method = "bsimp", .rel_tol = 1e-10, .abs_tol = 1e-10});
         // bsimp's steps lean on the Jacobian: with the exact one it keeps 7e-13 here, with one of the
@@ -901,15 +1026,20 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root");  // the closed form divides by S
         for (int n = 0; n < 20; ++n) {
             const Gaps g = random_gaps();
+            INPUTS(g);
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             const double f = std::exp(checks::uniform(-5, 5));
+            INPUTS(UNIT(f, "kg·m²/s²"));
             const long double S = S_ld(g), CA = (long double)g.BA + g.CB, A = g.A, B = A + g.BA, C = B + g.CB;
             const Vec3 a((double)std::sqrt(g.BA / CA), 0, -(double)std::sqrt(g.CB / CA));
             const Vec3 k((double)(g.CB * std::sqrt(g.BA / CA) / S), (double)((A + g.CB) / S),
                          (double)(g.BA * std::sqrt(g.CB / CA) / S));
+            INPUTS(k);
             const double alpha = (double)std::sqrt(f / S), sigma = n % 2 ? 1.0 : -1.0;
             const Mat3 J = Vec3((double)A, (double)B, (double)C).asDiagonal();
             const double t = checks::uniform(0, 20 / alpha);
+            INPUTS(UNIT(t, "s"));
             const Mat3 Ra = Rot(a, sigma * alpha * t), R = Rot(Vec3::UnitY(), sigma * alpha * t) * Ra;
             const Vec3 W = sigma * alpha * (a + Ra.transpose() * Vec3::UnitY());
             const double H = 0.5 * W.dot(J * W) + f * k.dot(R * a);
@@ -927,6 +1057,7 @@ TEST_SUITE("ch05_grioli_precession") {
         bodies.insert(bodies.end(), std::begin(far_bodies), std::end(far_bodies));
         for (const Gaps& g : bodies) {
             const rigid::Moments m = from_gaps(g.A, g.BA, g.CB);
+            INPUTS(m);
             // 2H = alpha^2 (a, J (a + b)) + alpha^2 (b, J (a + b)) at t = 0, where (k, z(0)) = (k, a) = 0.
             const long double CA = (long double)g.BA + g.CB, A = g.A, B = A + g.BA, C = B + g.CB, S = S_ld(g);
             const long double aA2 = g.BA / CA, aC2 = g.CB / CA, f = 3;
@@ -939,6 +1070,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_energy: rejects f <= 0 and a non-finite f") {
         ALSO_USES("grioli_root");  // the closed form divides by S
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         for (double f : {0.0, -1.0, nan_, inf_})
             CHECK_THROWS_AS((void)rigid::grioli_energy(m, f), std::invalid_argument);
     }
@@ -962,7 +1094,7 @@ const double bad_f[] = {0.0, -0.0, -tiny_, -1.0, inf_, -inf_, nan_};
 TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("moments: rejects A B C one ulp across each rule and accepts one ulp inside") {
         for (double x : {0.0, -0.0, -tiny_, inf_, -inf_, nan_}) {
-            CAPTURE(x);
+            INPUTS(UNIT(x, "kg·m²"));
             CHECK_THROWS_AS((void)rigid::moments(x, 2.0, 2.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments(1.0, x, 2.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments(1.0, 2.0, x), std::invalid_argument);
@@ -972,32 +1104,41 @@ TEST_SUITE("ch05_grioli_precession") {
         CHECK_THROWS_AS((void)rigid::moments(1.0, 2.0, next_up(3.0)), std::invalid_argument);  // A + B < C by one ulp
         // One ulp inside each rule: B = A + ulp, C = B + ulp; and the flat body C = A + B.
         const double A = 1.5, B = next_up(A), C = next_up(B);
+        INPUTS(UNIT(A, "kg·m²"), UNIT(B, "kg·m²"), UNIT(C, "kg·m²"));
         const rigid::Moments m = rigid::moments(A, B, C);
         CHECK(m.B_minus_A == B - A);
         CHECK(m.C_minus_B == C - B);
         const double q = std::ldexp(1.0, -990);  // A tiny flat body, exact in binary: q, 2q, 3q
+        INPUTS(UNIT(q, "kg·m²"));
+        INFO("the moments q, 2 q, 3 q");
         CHECK(rigid::moments(q, 2 * q, 3 * q).C_minus_B == q);
     }
 
     TEST_CASE("moments_from_gaps: rejects A or a gap one step across each rule and accepts the smallest gaps") {
         for (double x : {inf_, -inf_, nan_}) {
-            CAPTURE(x);
+            INPUTS(UNIT(x, "kg·m²"));
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(x, 0.5, 0.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(1.0, x, 0.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(1.0, 0.5, x), std::invalid_argument);
         }
         for (double x : {0.0, -0.0, -tiny_}) {
-            CAPTURE(x);
+            INPUTS(UNIT(x, "kg·m²"));
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(x, 0.5, 0.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(1.0, x, 0.5), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::moments_from_gaps(1.0, 0.5, x), std::invalid_argument);
         }
         CHECK_THROWS_AS((void)rigid::moments_from_gaps(0.75, 0.5, next_up(0.75)), std::invalid_argument);  // C - B > A
         // The smallest positive gaps, kept exactly; C - B = A, a flat body, accepted.
-        const rigid::Moments m = rigid::moments_from_gaps(1.0, tiny_, tiny_);
-        CHECK(m.B_minus_A == tiny_);
-        CHECK(m.C_minus_B == tiny_);
-        const rigid::Moments flat = rigid::moments_from_gaps(0.75, 0.5, 0.75);
+        {
+            const double A = 1.0, B_minus_A = tiny_, C_minus_B = tiny_;
+            INPUTS(UNIT(A, "kg·m²"), UNIT(B_minus_A, "kg·m²"), UNIT(C_minus_B, "kg·m²"));
+            const rigid::Moments m = rigid::moments_from_gaps(A, B_minus_A, C_minus_B);
+            CHECK(m.B_minus_A == tiny_);
+            CHECK(m.C_minus_B == tiny_);
+        }
+        const double A = 0.75, B_minus_A = 0.5, C_minus_B = 0.75;
+        INPUTS(UNIT(A, "kg·m²"), UNIT(B_minus_A, "kg·m²"), UNIT(C_minus_B, "kg·m²"));
+        const rigid::Moments flat = rigid::moments_from_gaps(A, B_minus_A, C_minus_B);
         CHECK(flat.C_minus_B == 0.75);
         CHECK(flat.A == 0.75);
     }
@@ -1005,6 +1146,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_alpha: rejects f just below 0 or infinite and accepts the smallest f") {
         ALSO_USES("grioli_root");
         const rigid::Moments m = from_gaps(1.0, 0.5, 0.7);
+        INPUTS(m);
         for (double f : bad_f) CHECK_THROWS_AS((void)rigid::grioli_alpha(m, f), std::invalid_argument);
         const long double S = S_ld({1.0, 0.5, 0.7});
         CHECK_REL(rigid::grioli_alpha(m, 1e-300), std::sqrt(1e-300L / S), 4e-15);
@@ -1014,6 +1156,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_precession: rejects f <= 0 or non-finite and accepts the smallest f") {
         ALSO_USES(GRIOLI_PRECESSION_PARTS);
         const rigid::Moments m = from_gaps(1.0, 0.5, 0.7);
+        INPUTS(m);
         for (double f : bad_f)
             for (Sense s : {Sense::ccw, Sense::cw})
                 CHECK_THROWS_AS((void)rigid::grioli_precession(m, f, s), std::invalid_argument);
@@ -1026,6 +1169,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("place_item_II: rejects f <= 0 or a bad up or toward along up and accepts the edges") {
         ALSO_USES("grioli_precession, " GRIOLI_PRECESSION_PARTS ", grioli_angular_velocity and item_II_rule_holds");
         const rigid::Moments m = from_moments(1.0, 1.7, 2.4);
+        INPUTS(m);
         for (double f : bad_f) CHECK_THROWS_AS((void)rigid::place_item_II(m, f, Sense::ccw), std::invalid_argument);
         for (const Vec3& v : {Vec3(0, 0, 0), Vec3(-0.0, 0, 0), Vec3(0, inf_, 1), Vec3(0, 0, -inf_), Vec3(nan_, 0, 1)}) {
             CHECK_THROWS_AS((void)rigid::place_item_II(m, 1.0, Sense::ccw, v, Vec3::UnitX()), std::invalid_argument);
@@ -1035,6 +1179,7 @@ TEST_SUITE("ch05_grioli_precession") {
         CHECK_THROWS_AS((void)rigid::place_item_II(m, 1.0, Sense::cw, Vec3(0, 0, 2), Vec3(0, 0, -3)),
                         std::invalid_argument);
         const Vec3 toward(1e-6, 0, 1);
+        INPUTS(toward);
         const rigid::LabPlacement p = rigid::place_item_II(m, 1e-300, Sense::cw, Vec3(0, 0, 1e-300), toward);
         CHECK_MAT_NEAR(p.k, Vec3::UnitZ(), 4e-15);
         CHECK_NEAR(std::abs(p.b.y()), 0.0, 4e-15);  // tilted in the plane of k and toward: y = 0
@@ -1044,16 +1189,20 @@ TEST_SUITE("ch05_grioli_precession") {
 
     TEST_CASE("integrate_grioli: rejects periods <= 0 or non-finite and samples_per_period < 1 and accepts 1 sample") {
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
+        INPUTS(m);
         // Any precession will do for the rules: they are checked before anything is integrated.
         const Vec3 a(0.6, 0, -0.8);
         const rigid::GrioliPrecession any{Sense::ccw, 2.0, 1.0, 0.5, a, Vec3::UnitY(), Vec3(0, 0.6, 0.8), a};
+        INPUTS(any);
         const rigid::OdeSettings settings{.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12};
+        INPUTS(settings);
         for (double periods : bad_f)
             CHECK_THROWS_AS((void)rigid::integrate_grioli(m, any, periods, 8, settings), std::invalid_argument);
         for (int samples : {0, -1})
             CHECK_THROWS_AS((void)rigid::integrate_grioli(m, any, 1.0, samples, settings), std::invalid_argument);
         ALSO_USES(INTEGRATE_GRIOLI_USES);
         const rigid::GrioliPrecession g = precession_here(m, 2.0, Sense::cw);
+        INPUTS(g);
         const rigid::PrecessionCheck c = rigid::integrate_grioli(m, g, 2.0, 1, settings);
         CHECK_SMALL(c.max_rotation_error, 1e-10);
         CHECK_SMALL(c.max_omega_error, 1e-10);
@@ -1063,6 +1212,7 @@ TEST_SUITE("ch05_grioli_precession") {
     TEST_CASE("grioli_energy: rejects f just below 0 or infinite and accepts the smallest f") {
         ALSO_USES("grioli_root");  // the closed form divides by S
         const rigid::Moments m = from_gaps(1.0, 0.5, 0.7);
+        INPUTS(m);
         for (double f : {-0.0, -tiny_, -inf_}) CHECK_THROWS_AS((void)rigid::grioli_energy(m, f), std::invalid_argument);
         // H = (f / S) (A a_A^2 + C a_C^2 + B) / 2 at t = 0 (see the test above), for f = 1e-300.
         const long double A = 1.0, B = 1.5, C = 2.2, CA = 1.2L, S = S_ld({1.0, 0.5, 0.7});

@@ -12,12 +12,30 @@
 #include <vector>
 
 #include "checks.hpp"
+#include "inputs.hpp"
 #include "rigid/ode.hpp"
 
 using rigid::Mat3;
 using rigid::Vec3;
 using rigid::VecX;
 using std::numbers::pi;
+
+// A search and a series in a failure message.
+template <>
+struct checks::Show<rigid::PrecessionSearch> {
+    static void to(std::ostream& s, const rigid::PrecessionSearch& x) {
+        show_fields(s, "moments", with_unit(x.moments, "kg·m²"), "gamma", with_unit(x.gamma, "rad"), "ratio", x.ratio,
+                    "k_along_b", x.k_along_b, "restarts", x.restarts, "seed", x.seed);
+    }
+};
+template <>
+struct checks::Show<rigid::PrecessionSeries> {
+    static void to(std::ostream& s, const rigid::PrecessionSeries& x) {
+        show_fields(s, "constant", x.constant, "cos_alpha", x.cos_alpha, "sin_alpha", x.sin_alpha, "cos_2alpha",
+                    x.cos_2alpha, "sin_2alpha", x.sin_2alpha, "cos_beta", x.cos_beta, "sin_beta", x.sin_beta,
+                    "cos_plus", x.cos_plus, "sin_plus", x.sin_plus, "cos_minus", x.cos_minus, "sin_minus", x.sin_minus);
+    }
+};
 
 namespace {
 
@@ -109,7 +127,10 @@ double lagrange_f(double A, double C, double alpha, double beta, double gamma) {
 TEST_SUITE("ch04_heavy_top") {
     TEST_CASE("heavy_top: keeps J and f and returns unit k and z0") {
         const Mat3 J = random_inertia();
-        const rigid::HeavyTop top = rigid::heavy_top(J, 2.5, Vec3(0, 0, 3), Vec3(1, 2, 2));
+        const double f = 2.5;
+        const Vec3 k(0, 0, 3), z0(1, 2, 2);
+        INPUTS(UNIT(J, "kg·m²"), UNIT(f, "kg·m²/s²"), k, z0);
+        const rigid::HeavyTop top = rigid::heavy_top(J, f, k, z0);
         CHECK_MAT_NEAR(top.J, J, 0.0);
         CHECK_NEAR(top.f, 2.5, 0.0);
         CHECK_MAT_NEAR(top.k, Vec3(0, 0, 1), 1e-16);
@@ -120,6 +141,7 @@ TEST_SUITE("ch04_heavy_top") {
         const Mat3 J = Vec3(1, 2, 2.5).asDiagonal();
         Mat3 asym = J;
         asym(0, 1) = 0.1;
+        INPUTS(J, asym);
         CHECK_THROWS_AS(rigid::heavy_top(asym, 1, Vec3::UnitZ(), Vec3::UnitX()), std::invalid_argument);
         CHECK_THROWS_AS(rigid::heavy_top(Vec3(1, -2, 2.5).asDiagonal(), 1, Vec3::UnitZ(), Vec3::UnitX()),
                         std::invalid_argument);
@@ -138,8 +160,8 @@ TEST_SUITE("ch04_heavy_top") {
         J1 << 1, 2, 0, 2, 1, 0, 0, 0, 1;
         J2 << 1, 2, 2, 2, 1, 2, 2, 2, 1;
         for (const Mat3& J : {J1, J2}) {
-            INFO("J =\n"
-                 << J << "\nwith the eigenvalues " << Eigen::SelfAdjointEigenSolver<Mat3>(J).eigenvalues().transpose());
+            INPUTS(J);
+            INFO("J has the eigenvalues " << Eigen::SelfAdjointEigenSolver<Mat3>(J).eigenvalues().transpose());
             CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, Vec3::UnitZ(), Vec3::UnitX()), std::invalid_argument);
         }
     }
@@ -154,6 +176,7 @@ TEST_SUITE("ch04_heavy_top") {
             Mat3 ok = scale * J, bad = scale * J;
             ok(1, 0) += 0.5 * allowance;
             bad(1, 0) += 2 * allowance;
+            INPUTS(ok, bad);
             INFO("J scaled by " << scale << ": |J_10 - J_01| = " << ok(1, 0) - ok(0, 1) << " must be accepted, "
                                 << bad(1, 0) - bad(0, 1) << " refused (1e-12 of the largest entry is " << allowance
                                 << ")");
@@ -168,7 +191,9 @@ TEST_SUITE("ch04_heavy_top") {
             const double f = checks::uniform(0.1, 5);
             const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
             const rigid::BodyState s{checks::random_vector(3), checks::random_rotation(0, pi)};
-            const rigid::BodyState d = rigid::euler_poisson_rhs(top_of(J, f, k, z0), s);
+            const rigid::HeavyTop top = top_of(J, f, k, z0);
+            INPUTS(top, s);
+            const rigid::BodyState d = rigid::euler_poisson_rhs(top, s);
             const rigid::BodyState ref = rhs_ref(J, f, k, z0, s);
             CHECK_MAT_NEAR(d.Omega, ref.Omega, 1e-12);
             CHECK_MAT_NEAR(d.R, ref.R, 1e-14);
@@ -181,6 +206,10 @@ TEST_SUITE("ch04_heavy_top") {
         const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
         const rigid::HeavyTop top = top_of(J, f, k, z0);
         const rigid::BodyState s0{checks::random_vector(2), Mat3::Identity()};
+        INPUTS(top, s0);
+        INFO(
+            "integrated by rk8pd (tolerances 1e-12) over 0 <= t <= 20 s; the largest changes of H (kg·m²/s²) and of "
+            "the vertical angular momentum (kg·m²/s) at 40 times");
         // Both written out here: H = 1/2 Omega.J Omega + f k.R z0 and the vertical angular momentum.
         auto H = [&](const rigid::BodyState& s) { return 0.5 * s.Omega.dot(J * s.Omega) + f * k.dot(s.R * z0); };
         auto Lk = [&](const rigid::BodyState& s) { return k.dot(s.R * (J * s.Omega)); };
@@ -194,8 +223,6 @@ TEST_SUITE("ch04_heavy_top") {
                 dL = std::max(dL, std::abs(Lk(s) - Lk(s0)));
             },
             {.method = "rk8pd", .rel_tol = 1e-12, .abs_tol = 1e-12});
-        CAPTURE(dH);
-        CAPTURE(dL);
         CHECK_SMALL(dH, 1e-9);
         CHECK_SMALL(dL, 1e-9);
     }
@@ -207,12 +234,16 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
             const rigid::BodyState s{checks::random_vector(3), checks::random_rotation(0, pi)};
             const double kinetic = 0.5 * (J * s.Omega).dot(s.Omega), height = (s.R * z0).dot(k);
-            CHECK_NEAR(rigid::heavy_top_energy(top_of(J, f, k, z0), s), kinetic + f * height, 1e-13);
+            const rigid::HeavyTop top = top_of(J, f, k, z0);
+            INPUTS(top, s);
+            CHECK_NEAR(rigid::heavy_top_energy(top, s), kinetic + f * height, 1e-13);
         }
         // Standing upright (R z0 = k) is the highest potential energy, hanging the lowest.
         const rigid::HeavyTop top = top_of(Mat3::Identity(), 2.0, Vec3::UnitZ(), Vec3::UnitZ());
-        CHECK_NEAR(rigid::heavy_top_energy(top, {Vec3::Zero(), Mat3::Identity()}), 2.0, 1e-15);
-        CHECK_NEAR(rigid::heavy_top_energy(top, {Vec3::Zero(), Rot(Vec3::UnitX(), pi)}), -2.0, 1e-15);
+        const rigid::BodyState upright{Vec3::Zero(), Mat3::Identity()}, hanging{Vec3::Zero(), Rot(Vec3::UnitX(), pi)};
+        INPUTS(top, upright, hanging);
+        CHECK_NEAR(rigid::heavy_top_energy(top, upright), 2.0, 1e-15);
+        CHECK_NEAR(rigid::heavy_top_energy(top, hanging), -2.0, 1e-15);
     }
 
     TEST_CASE("euler_poisson_jacobian: matches central differences of the right-hand side") {
@@ -221,7 +252,9 @@ TEST_SUITE("ch04_heavy_top") {
             const double f = checks::uniform(0.1, 3);
             const Vec3 k = checks::random_unit(), z0 = checks::random_unit();
             const rigid::BodyState s{checks::random_vector(2), checks::random_rotation(0, pi)};
-            const rigid::MatX D = rigid::euler_poisson_jacobian(top_of(J, f, k, z0), s);
+            const rigid::HeavyTop top = top_of(J, f, k, z0);
+            INPUTS(top, s);
+            const rigid::MatX D = rigid::euler_poisson_jacobian(top, s);
             REQUIRE(D.rows() == 12);
             REQUIRE(D.cols() == 12);
             const VecX y = rigid::pack(s);
@@ -244,7 +277,9 @@ TEST_SUITE("ch04_heavy_top") {
             const Mat3 J = random_inertia();
             const Vec3 a = checks::random_unit(), b = checks::random_unit();
             const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(-3, 3), t = checks::uniform(-5, 5);
-            CHECK_MAT_NEAR(rigid::euler_vector(J, {a, alpha, b, beta}, t), E_ref(J, a, alpha, b, beta, t), 1e-12);
+            const rigid::TrialPrecession p{a, alpha, b, beta};
+            INPUTS(UNIT(J, "kg·m²"), p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::euler_vector(J, p, t), E_ref(J, a, alpha, b, beta, t), 1e-12);
         }
     }
 
@@ -254,11 +289,9 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 a = checks::random_unit(), b = checks::random_unit();
             const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(-3, 3), t = checks::uniform(-5, 5);
             const double la = std::exp(checks::uniform(-3, 3)), lb = std::exp(checks::uniform(-3, 3));
-            INFO("euler_vector(J, {" << la << " a, alpha, " << lb << " b, beta}, t) with unit a = " << a.transpose()
-                                     << ", b = " << b.transpose() << ", alpha = " << alpha << ", beta = " << beta
-                                     << ", t = " << t);
-            CHECK_MAT_NEAR(rigid::euler_vector(J, {la * a, alpha, lb * b, beta}, t), E_ref(J, a, alpha, b, beta, t),
-                           1e-12);
+            const rigid::TrialPrecession p{la * a, alpha, lb * b, beta};
+            INPUTS(UNIT(J, "kg·m²"), p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::euler_vector(J, p, t), E_ref(J, a, alpha, b, beta, t), 1e-12);
         }
     }
 
@@ -267,11 +300,16 @@ TEST_SUITE("ch04_heavy_top") {
         const double A = 1.2, C = 2.0, beta = 0.9, gamma = 0.7;
         const Vec3 a = Vec3::UnitZ(), b(0, std::sin(gamma), std::cos(gamma));
         const double alpha = beta * std::cos(gamma) * (A - C) / C;
-        for (double t : {0.0, 0.3, 2.0, 7.5})
-            CHECK_MAT_NEAR(rigid::euler_vector(Vec3(A, A, C).asDiagonal(), {a, alpha, b, beta}, t), Vec3::Zero(),
-                           1e-14);
+        const Mat3 J = Vec3(A, A, C).asDiagonal();
+        const rigid::TrialPrecession p{a, alpha, b, beta}, q{a, 1.01 * alpha, b, beta};
+        for (double t : {0.0, 0.3, 2.0, 7.5}) {
+            INPUTS(UNIT(J, "kg·m²"), p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::euler_vector(J, p, t), Vec3::Zero(), 1e-14);
+        }
         // and does not for a slightly different spin
-        CHECK(rigid::euler_vector(Vec3(A, A, C).asDiagonal(), {a, 1.01 * alpha, b, beta}, 0.3).norm() >= 1e-3);
+        const double t = 0.3;
+        INPUTS(UNIT(J, "kg·m²"), q, UNIT(t, "s"));
+        CHECK(rigid::euler_vector(J, q, t).norm() >= 1e-3);
     }
 
     TEST_CASE("euler_vector: rejects a zero axis and a non-finite time") {
@@ -286,8 +324,11 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 a = checks::random_unit(), b = checks::random_unit(), k = checks::random_unit(),
                        z0 = checks::random_unit();
             const double alpha = checks::uniform(0.2, 3), beta = checks::uniform(0.2, 3), t = checks::uniform(-5, 5);
-            CHECK_MAT_NEAR(rigid::torque(k, z0, {a, alpha, b, beta}, t), T_ref(k, z0, a, alpha, b, beta, t), 1e-14);
+            const rigid::TrialPrecession p{a, alpha, b, beta};
+            INPUTS(k, z0, p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::torque(k, z0, p, t), T_ref(k, z0, a, alpha, b, beta, t), 1e-14);
             // The axes may come with any length.
+            INFO("the axes 3 a and 0.5 b");
             CHECK_MAT_NEAR(rigid::torque(k, z0, {3 * a, alpha, 0.5 * b, beta}, t), T_ref(k, z0, a, alpha, b, beta, t),
                            1e-14);
         }
@@ -301,6 +342,7 @@ TEST_SUITE("ch04_heavy_top") {
                           &s.sin_beta, &s.cos_plus,  &s.sin_plus,  &s.cos_minus,  &s.sin_minus};
         for (Vec3* v : fields) *v = checks::random_vector();
         const double alpha = 1.3, beta = 0.4, t = 2.2, gp = (alpha + beta) * t, gm = (alpha - beta) * t;
+        INPUTS(s, UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"), UNIT(t, "s"));
         const Vec3 expected = s.constant + s.cos_alpha * std::cos(alpha * t) + s.sin_alpha * std::sin(alpha * t) +
                               s.cos_2alpha * std::cos(2 * alpha * t) + s.sin_2alpha * std::sin(2 * alpha * t) +
                               s.cos_beta * std::cos(beta * t) + s.sin_beta * std::sin(beta * t) +
@@ -316,8 +358,11 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 a = Vec3::UnitZ(), b(0, b2, b3);
             const double alpha = 3, beta = 5;  // all frequencies 0, 2, 3, 5, 6, 8 resolved on 2 pi
             const auto numeric = fourier_fit([&](double t) { return E_ref(J, a, alpha, b, beta, t); }, alpha, beta);
+            INPUTS(UNIT(J, "kg·m²"), UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"), b3);
+            INFO(
+                "the rows: the coefficients of 1, cos alpha t, sin alpha t, ..., sin (alpha - beta) t as in the "
+                "header");
             const auto series = as_rows(rigid::euler_vector_series(J, alpha, beta, b3));
-            CAPTURE(b3);
             CHECK_MAT_NEAR(series, numeric, 1e-11);
         }
     }
@@ -329,8 +374,7 @@ TEST_SUITE("ch04_heavy_top") {
         for (auto [alpha, beta] : {std::pair{1.0, 1.0}, {0.7, 1.9}, {2.0, 0.5}}) {
             const rigid::PrecessionSeries s = rigid::euler_vector_series(J, alpha, beta, b3);
             for (double t : {0.1, 1.7, 4.0}) {
-                CAPTURE(alpha);
-                CAPTURE(beta);
+                INPUTS(UNIT(J, "kg·m²"), UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"), b3, UNIT(t, "s"));
                 CHECK_MAT_NEAR(rigid::evaluate(s, alpha, beta, t),
                                E_ref(J, Vec3::UnitZ(), alpha, Vec3(0, b2, b3), beta, t), 1e-12);
             }
@@ -342,6 +386,7 @@ TEST_SUITE("ch04_heavy_top") {
         CHECK_THROWS_AS(rigid::euler_vector_series(Mat3::Identity(), 1, 1, nan_), std::invalid_argument);
         Mat3 J = Mat3::Identity();
         J(0, 2) = 0.3;
+        INPUTS(J);
         CHECK_THROWS_AS(rigid::euler_vector_series(J, 1, 1, 0.2), std::invalid_argument);
     }
 
@@ -351,8 +396,11 @@ TEST_SUITE("ch04_heavy_top") {
             const Vec3 a = Vec3::UnitZ(), b(0, b2, b3), k(0, std::cos(th), std::sin(th)), z0 = checks::random_unit();
             const double alpha = 3, beta = 5;
             const auto numeric = fourier_fit([&](double t) { return T_ref(k, z0, a, alpha, b, beta, t); }, alpha, beta);
+            INPUTS(k, z0, UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"), b3);
+            INFO(
+                "the rows: the coefficients of 1, cos alpha t, sin alpha t, ..., sin (alpha - beta) t as in the "
+                "header");
             const auto series = as_rows(rigid::torque_series(k, z0, alpha, beta, b3));
-            CAPTURE(b3);
             CHECK_MAT_NEAR(series, numeric, 1e-13);
         }
     }
@@ -363,9 +411,11 @@ TEST_SUITE("ch04_heavy_top") {
         const Vec3 k = Vec3(0, 0.3, -0.9).normalized(), z0 = checks::random_unit();
         const double alpha = std::sqrt(2.0), beta = std::numbers::e;
         const rigid::PrecessionSeries s = rigid::torque_series(k, z0, alpha, beta, b3);
-        for (double t : {0.2, 3.3, 10.1})
+        for (double t : {0.2, 3.3, 10.1}) {
+            INPUTS(k, z0, UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"), b3, UNIT(t, "s"));
             CHECK_MAT_NEAR(rigid::evaluate(s, alpha, beta, t),
                            T_ref(k, z0, Vec3::UnitZ(), alpha, Vec3(0, b2, b3), beta, t), 1e-14);
+        }
     }
 
     TEST_CASE("torque_series: rejects k outside the plane of a and b") {
@@ -387,8 +437,11 @@ TEST_SUITE("ch04_heavy_top") {
             sum += (E_ref(J, a, alpha, b, beta, t) - f * T_ref(k, z0, a, alpha, b, beta, t)).squaredNorm();
         }
         const double expected = std::sqrt(sum / n) / f;
+        const rigid::HeavyTop top = top_of(J, f, k, z0);
+        const rigid::TrialPrecession p{a, alpha, b, beta};
+        INPUTS(top, p, n);
         CHECK(expected > 0.01);
-        CHECK_NEAR(rigid::precession_residual(top_of(J, f, k, z0), {a, alpha, b, beta}, n), expected, 1e-12 * expected);
+        CHECK_NEAR(rigid::precession_residual(top, p, n), expected, 1e-12 * expected);
         // The axes are normalised: a of length 2.5 and b of length 0.4 name the same precession.
         INFO("precession_residual with the axes 2.5 a and 0.4 b");
         CHECK_NEAR(rigid::precession_residual(top_of(J, f, k, z0), {2.5 * a, alpha, 0.4 * b, beta}, n), expected,
@@ -399,16 +452,23 @@ TEST_SUITE("ch04_heavy_top") {
         const double A = 1.4, C = 2.1, gamma = 1.1, alpha = 1.3, beta = 0.6;
         const Vec3 a = Vec3::UnitZ(), b(0, std::sin(gamma), std::cos(gamma));
         const double f = lagrange_f(A, C, alpha, beta, gamma);
+        INPUTS(UNIT(A, "kg·m²"), UNIT(C, "kg·m²"), UNIT(gamma, "rad"), UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"));
         REQUIRE(f > 0);
         const rigid::HeavyTop top = top_of(Vec3(A, A, C).asDiagonal(), f, b, a);
-        CHECK_SMALL(rigid::precession_residual(top, {a, alpha, b, beta}), 1e-14);
+        const rigid::TrialPrecession p{a, alpha, b, beta};
+        {
+            INPUTS(top, p);
+            CHECK_SMALL(rigid::precession_residual(top, p), 1e-14);
+        }
         // Another f is not a precession.
-        CHECK(rigid::precession_residual(top_of(Vec3(A, A, C).asDiagonal(), 1.1 * f, b, a), {a, alpha, b, beta}) >=
-              1e-3);
+        const rigid::HeavyTop other = top_of(Vec3(A, A, C).asDiagonal(), 1.1 * f, b, a);
+        INPUTS(other, p);
+        CHECK(rigid::precession_residual(other, p) >= 1e-3);
     }
 
     TEST_CASE("precession_residual: rejects fewer than 16 samples and frequencies <= 0") {
         const rigid::HeavyTop top = top_of(Mat3::Identity(), 1, Vec3::UnitZ(), Vec3::UnitX());
+        INPUTS(top);
         CHECK_THROWS_AS(rigid::precession_residual(top, {Vec3::UnitZ(), 1, Vec3::UnitY(), 1}, 8),
                         std::invalid_argument);
         CHECK_THROWS_AS(rigid::precession_residual(top, {Vec3::UnitZ(), 0, Vec3::UnitY(), 1}), std::invalid_argument);
@@ -416,8 +476,9 @@ TEST_SUITE("ch04_heavy_top") {
 
     TEST_CASE("min_precession_residual: finds the orthogonal precession with beta = alpha of an asymmetric body") {
         ALSO_USES("precession_residual");  // the search minimises it
-        const rigid::PrecessionFit fit =
-            rigid::min_precession_residual({.moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 2, .ratio = 1});
+        const rigid::PrecessionSearch search{.moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 2, .ratio = 1};
+        INPUTS(search);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(search);
         CHECK_SMALL(fit.residual, 1e-10);
         // The reported minimum is what the fit gives when checked independently.
         const rigid::TrialPrecession& p = fit.precession;
@@ -439,8 +500,10 @@ TEST_SUITE("ch04_heavy_top") {
 
     TEST_CASE("min_precession_residual: finds Lagrange's precession about the vertical of a symmetric body") {
         ALSO_USES("precession_residual");  // the search minimises it
-        const rigid::PrecessionFit fit = rigid::min_precession_residual(
-            {.moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true});
+        const rigid::PrecessionSearch search{
+            .moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true};
+        INPUTS(search);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(search);
         CHECK_SMALL(fit.residual, 1e-10);
         CHECK_MAT_NEAR(fit.top.k, fit.precession.b, 0.0);
     }
@@ -448,10 +511,10 @@ TEST_SUITE("ch04_heavy_top") {
     TEST_CASE("min_precession_residual: finds Lagrange's precession of a random symmetric body (the graders' seed)") {
         ALSO_USES("precession_residual");  // the search minimises it
         const double A = checks::uniform(1, 2), C = A * checks::uniform(1.2, 1.9);
-        const rigid::PrecessionFit fit = rigid::min_precession_residual(
-            {.moments = Vec3(A, A, C), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true});
-        CAPTURE(A);
-        CAPTURE(C);
+        const rigid::PrecessionSearch search{
+            .moments = Vec3(A, A, C), .gamma = pi / 3, .ratio = 1.5, .k_along_b = true};
+        INPUTS(search);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(search);
         CHECK_SMALL(fit.residual, 1e-10);
         CHECK_MAT_NEAR(fit.top.k, fit.precession.b, 0.0);
     }
@@ -463,8 +526,9 @@ TEST_SUITE("ch04_heavy_top") {
     // residual of 0.27 here (measured).
     TEST_CASE("min_precession_residual: with k free finds a regular precession of a symmetric body at gamma = pi/3") {
         ALSO_USES("precession_residual");  // the search minimises it
-        const rigid::PrecessionFit fit =
-            rigid::min_precession_residual({.moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5});
+        const rigid::PrecessionSearch search{.moments = Vec3(1.5, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.5};
+        INPUTS(search);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(search);
         CHECK_SMALL(fit.residual, 1e-10);
         const rigid::TrialPrecession& p = fit.precession;
         CHECK_MAT_NEAR(p.b, Vec3(0, std::sin(pi / 3), std::cos(pi / 3)), 1e-15);
@@ -479,8 +543,10 @@ TEST_SUITE("ch04_heavy_top") {
 
     TEST_CASE("min_precession_residual: stays away from zero for an asymmetric body precessing about the vertical") {
         ALSO_USES("precession_residual");  // the search minimises it
-        const rigid::PrecessionFit fit = rigid::min_precession_residual(
-            {.moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.0, .k_along_b = true});
+        const rigid::PrecessionSearch search{
+            .moments = Vec3(1.0, 1.5, 2.2), .gamma = pi / 3, .ratio = 1.0, .k_along_b = true};
+        INPUTS(search);
+        const rigid::PrecessionFit fit = rigid::min_precession_residual(search);
         CHECK(fit.residual >= 1e-2);
         CHECK_MAT_NEAR(fit.top.k, fit.precession.b, 0.0);
         const rigid::TrialPrecession& p = fit.precession;
@@ -556,12 +622,12 @@ TEST_SUITE("ch04_heavy_top") {
     TEST_CASE("sleeping_top_min_spin: unstable just below it and stable just above it") {
         for (int n = 0; n < 20; ++n) {
             const double A = checks::uniform(0.5, 3), C = checks::uniform(0.2, 2) * A, f = checks::uniform(0.1, 5);
-            CAPTURE(A);
-            CAPTURE(C);
-            CAPTURE(f);
+            INPUTS(UNIT(A, "kg·m²"), UNIT(C, "kg·m²"), UNIT(f, "kg·m²/s²"));
             const double w = rigid::sleeping_top_min_spin(A, C, f);
             const double rate = std::sqrt(f / A);  // the scale of the growth rates
-            INFO("threshold from your function " << w);
+            INFO("your threshold " << checks::digits17(w)
+                                   << " rad/s; the largest growth rate (1/s) of the upright spin 1e-6 below it must be "
+                                      "at least 1e-4 sqrt(f / A), 1e-6 above it at most 1e-9 sqrt(f / A)");
             CHECK(largest_growth_rate(A, C, f, w * (1 - 1e-6)) >= 1e-4 * rate);
             CHECK(largest_growth_rate(A, C, f, w * (1 + 1e-6)) <= 1e-9 * rate);
         }
@@ -583,14 +649,19 @@ TEST_SUITE("ch04_heavy_top") {
         "euler_vector: E = (1.7; 0; 0) at t = 0 and (0; -2.7; 0) at t = pi/2 in the worked example of Chapter 4") {
         const Mat3 J = Vec3(1, 1.5, 2.2).asDiagonal();
         const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
-        CHECK_MAT_NEAR(rigid::euler_vector(J, p, 0.0), Vec3(1.7, 0, 0), 1e-14);
-        CHECK_MAT_NEAR(rigid::euler_vector(J, p, pi / 2), Vec3(0, -2.7, 0), 1e-14);
+        for (double t : {0.0, pi / 2}) {
+            INPUTS(UNIT(J, "kg·m²"), p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::euler_vector(J, p, t), t == 0 ? Vec3(1.7, 0, 0) : Vec3(0, -2.7, 0), 1e-14);
+        }
     }
 
     TEST_CASE("torque: T = (1; 0; 0) at t = 0 and (0; -1; 0) at t = pi/2 in the worked example of Chapter 4") {
         const rigid::TrialPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitY(), 1.0};
-        CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, 0.0), Vec3(1, 0, 0), 1e-15);
-        CHECK_MAT_NEAR(rigid::torque(Vec3::UnitY(), Vec3::UnitZ(), p, pi / 2), Vec3(0, -1, 0), 1e-15);
+        const Vec3 k = Vec3::UnitY(), z0 = Vec3::UnitZ();
+        for (double t : {0.0, pi / 2}) {
+            INPUTS(k, z0, p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::torque(k, z0, p, t), t == 0 ? Vec3(1, 0, 0) : Vec3(0, -1, 0), 1e-15);
+        }
     }
 
 }  // TEST_SUITE
@@ -624,19 +695,30 @@ TEST_SUITE("ch04_heavy_top") {
         Mat3 J = Vec3(2, 3, 4).asDiagonal();
         J(0, 1) = J(1, 0) = 0.5;
         const Vec3 k = Vec3::UnitZ(), z0 = Vec3::UnitX();
+        INPUTS(J, k, z0);
         // Symmetric to 1e-12 of the largest entry (4): a 1.2e-11 difference is refused, 1e-12 is not.
         Mat3 off = J;
         off(1, 0) += 1.2e-11;
-        CHECK_THROWS_AS(rigid::heavy_top(off, 1.0, k, z0), std::invalid_argument);
+        {
+            INPUTS(off);
+            CHECK_THROWS_AS(rigid::heavy_top(off, 1.0, k, z0), std::invalid_argument);
+        }
         off(1, 0) = J(1, 0) + 1e-12;
-        CHECK(rigid::heavy_top(off, 1.0, k, z0).J == off);
+        {
+            INPUTS(off);
+            CHECK(rigid::heavy_top(off, 1.0, k, z0).J == off);
+        }
         // The edge itself, "at most": |J_10 - J_01| = 1e-12 exactly, 1e-12 times the largest entry (1).
         Mat3 edge = Mat3::Identity();
         edge(1, 0) = 1e-12;
-        CHECK(rigid::heavy_top(edge, 1.0, k, z0).J == edge);
+        {
+            INPUTS(edge);
+            CHECK(rigid::heavy_top(edge, 1.0, k, z0).J == edge);
+        }
         for (double x : {inf_, nan_}) {
             Mat3 bad = J;
             bad(2, 2) = x;
+            INPUTS(bad);
             CHECK_THROWS_AS(rigid::heavy_top(bad, 1.0, k, z0), std::invalid_argument);
         }
         // Positive definite: a zero or tiny negative eigenvalue is refused, a tiny positive one is not.
@@ -644,11 +726,12 @@ TEST_SUITE("ch04_heavy_top") {
             CHECK_THROWS_AS(rigid::heavy_top(Vec3(2, 3, x).asDiagonal(), 1.0, k, z0), std::invalid_argument);
         CHECK_NOTHROW(rigid::heavy_top(Vec3(2, 3, 1e-300).asDiagonal(), 1.0, k, z0));
         for (double f : {0.0, -0.0, -tiny_, inf_, -inf_, nan_}) {
-            CAPTURE(f);
+            INPUTS(UNIT(f, "kg·m²/s²"));
             CHECK_THROWS_AS(rigid::heavy_top(J, f, k, z0), std::invalid_argument);
         }
         CHECK(rigid::heavy_top(J, tiny_, k, z0).f == tiny_);
         for (const Vec3& v : bad_vectors()) {
+            INPUTS(v);
             CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, v, z0), std::invalid_argument);
             CHECK_THROWS_AS(rigid::heavy_top(J, 1.0, k, v), std::invalid_argument);
         }
@@ -663,19 +746,22 @@ TEST_SUITE("ch04_heavy_top") {
         "frequencies") {
         const Mat3 J = random_inertia();
         const Vec3 a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 0);
+        INPUTS(J, a, b);
         for (const Vec3& v : bad_vectors()) {
+            INPUTS(v);
             CHECK_THROWS_AS(rigid::euler_vector(J, {v, 1.0, b, 1.0}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, v, 1.0}, 0.3), std::invalid_argument);
         }
         for (double x : {inf_, -inf_, nan_}) {
+            INPUTS(x);
             CHECK_THROWS_AS(rigid::euler_vector(J, {a, x, b, 1.0}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, b, x}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::euler_vector(J, {a, 1.0, b, 1.0}, x), std::invalid_argument);
         }
         // Any finite frequency is valid: 0 and negative ones too, with the formula unchanged.
         for (const auto& [alpha, beta] : {std::pair{0.0, 1.3}, {-0.9, 0.0}, {-0.9, -1.3}, {0.0, 0.0}}) {
-            CAPTURE(alpha);
-            CAPTURE(beta);
+            INPUTS(UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"));
+            INFO("t = 0.3 s");
             CHECK_MAT_NEAR(rigid::euler_vector(J, {a, alpha, b, beta}, 0.3), E_ref(J, a, alpha, b, beta, 0.3), 1e-13);
         }
     }
@@ -683,18 +769,21 @@ TEST_SUITE("ch04_heavy_top") {
     TEST_CASE(
         "torque: rejects a bad axis or a non-finite alpha or beta or t and accepts zero and negative frequencies") {
         const Vec3 k = Vec3(0.6, 0, 0.8), z0 = Vec3(0, 1, 0), a = Vec3(0, 0.6, 0.8), b = Vec3(1, 0, 0);
+        INPUTS(k, z0, a, b);
         for (const Vec3& v : bad_vectors()) {
+            INPUTS(v);
             CHECK_THROWS_AS(rigid::torque(k, z0, {v, 1.0, b, 1.0}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, v, 1.0}, 0.3), std::invalid_argument);
         }
         for (double x : {inf_, -inf_, nan_}) {
+            INPUTS(x);
             CHECK_THROWS_AS(rigid::torque(k, z0, {a, x, b, 1.0}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, b, x}, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::torque(k, z0, {a, 1.0, b, 1.0}, x), std::invalid_argument);
         }
         for (const auto& [alpha, beta] : {std::pair{0.0, 1.3}, {-0.9, 0.0}, {-0.9, -1.3}, {0.0, 0.0}}) {
-            CAPTURE(alpha);
-            CAPTURE(beta);
+            INPUTS(UNIT(alpha, "rad/s"), UNIT(beta, "rad/s"));
+            INFO("t = 0.3 s");
             CHECK_MAT_NEAR(rigid::torque(k, z0, {a, alpha, b, beta}, 0.3), T_ref(k, z0, a, alpha, b, beta, 0.3), 1e-15);
         }
     }
@@ -703,11 +792,13 @@ TEST_SUITE("ch04_heavy_top") {
         "euler_vector_series: rejects b3 = -1 or 1 or a non-finite alpha or beta or J and accepts b3 next to -1 and "
         "1") {
         const Mat3 J = random_inertia();
+        INPUTS(J);
         for (double b3 : {1.0, -1.0, std::nextafter(1.0, 2.0), inf_, -inf_, nan_}) {
-            CAPTURE(b3);
+            INPUTS(b3);
             CHECK_THROWS_AS(rigid::euler_vector_series(J, 1.0, 2.0, b3), std::invalid_argument);
         }
         for (double x : {inf_, -inf_, nan_}) {
+            INPUTS(x);
             CHECK_THROWS_AS(rigid::euler_vector_series(J, x, 2.0, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::euler_vector_series(J, 1.0, x, 0.3), std::invalid_argument);
             Mat3 bad = J;
@@ -717,7 +808,8 @@ TEST_SUITE("ch04_heavy_top") {
         // The last b3 inside (-1, 1), where b2 = sqrt(1 - b3^2) is about 1.5e-8 (or 2.1e-8):
         // the series still sums to E along a = e3, b = (0, b2, b3).
         for (double b3 : {std::nextafter(1.0, 0.0), std::nextafter(-1.0, 0.0)}) {
-            CAPTURE(b3);
+            INPUTS(b3);
+            INFO("alpha = 0.8 rad/s, beta = -1.7 rad/s");
             const Vec3 b(0, std::sqrt((1 - b3) * (1 + b3)), b3);
             const rigid::PrecessionSeries s = rigid::euler_vector_series(J, 0.8, -1.7, b3);
             for (double t : {0.3, 2.9})
@@ -729,6 +821,7 @@ TEST_SUITE("ch04_heavy_top") {
         "torque_series: rejects k just outside the plane of a and b or b3 = -1 or 1 and accepts k just inside and any "
         "z0") {
         const Vec3 z0(0.3, -0.5, 0.8);
+        INPUTS(z0);
         // |k_1| <= 1e-12 |k|: 2e-12 is refused, 0.5e-12 accepted (|k| = 1).
         CHECK_THROWS_AS(rigid::torque_series(Vec3(2e-12, 0.6, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
         CHECK_THROWS_AS(rigid::torque_series(Vec3(-2e-12, 0.6, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
@@ -737,6 +830,7 @@ TEST_SUITE("ch04_heavy_top") {
         for (double b3 : {1.0, -1.0, inf_, nan_})
             CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, 1, 2, b3), std::invalid_argument);
         for (double x : {inf_, -inf_, nan_}) {
+            INPUTS(x);
             CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, x, 2, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::torque_series(Vec3(0, 0.6, 0.8), z0, 1, x, 0.3), std::invalid_argument);
             CHECK_THROWS_AS(rigid::torque_series(Vec3(0, x, 0.8), z0, 1, 2, 0.3), std::invalid_argument);
@@ -745,10 +839,14 @@ TEST_SUITE("ch04_heavy_top") {
         const double b3 = 0.3;
         const Vec3 b(0, std::sqrt(1 - b3 * b3), b3), k(0.5e-12, 0.6, 0.8);
         const rigid::PrecessionSeries s = rigid::torque_series(k, z0, 1.0, 2.0, b3);
-        for (double t : {0.3, 2.9})
+        for (double t : {0.3, 2.9}) {
+            INPUTS(k, b3, UNIT(t, "s"));
+            INFO("alpha = 1 rad/s, beta = 2 rad/s");
             CHECK_MAT_NEAR(series_at(s, 1.0, 2.0, t), T_ref(k, z0, Vec3::UnitZ(), 1.0, b, 2.0, t), 5e-12);
+        }
         // z0 = 0 is "any vector": no torque at all.
         const rigid::PrecessionSeries zero = rigid::torque_series(Vec3(0, 0.6, 0.8), Vec3::Zero(), 1.0, 2.0, b3);
+        INFO("torque_series((0, 0.6, 0.8), (0, 0, 0), 1, 2, b3)");
         CHECK_MAT_NEAR(as_rows(zero), Eigen::MatrixXd::Zero(11, 3), 0.0);
     }
 
@@ -756,13 +854,16 @@ TEST_SUITE("ch04_heavy_top") {
         const Mat3 J = random_inertia();
         const Vec3 k = Vec3(0, 0.6, 0.8), z0 = Vec3(0.8, 0, 0.6), a = Vec3::UnitZ(), b = Vec3(0, 0.8, 0.6);
         const rigid::HeavyTop top = top_of(J, 1.7, k, z0);
+        INPUTS(top, a, b);
         for (int n : {15, 0, -16})
             CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, b, 1.9}, n), std::invalid_argument);
         for (double x : {0.0, -tiny_, inf_, nan_}) {
+            INPUTS(x);
             CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, x, b, 1.9}), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, b, x}), std::invalid_argument);
         }
         for (const Vec3& v : bad_vectors()) {
+            INPUTS(v);
             CHECK_THROWS_AS((void)rigid::precession_residual(top, {v, 0.8, b, 1.9}), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::precession_residual(top, {a, 0.8, v, 1.9}), std::invalid_argument);
         }
@@ -774,6 +875,7 @@ TEST_SUITE("ch04_heavy_top") {
             sum += (E_ref(J, a, 0.8, b, 1.9, t) - 1.7 * T_ref(k, z0, a, 0.8, b, 1.9, t)).squaredNorm();
         }
         const double expected = std::sqrt(sum / 16) / 1.7;
+        INFO("alpha = 0.8 rad/s, beta = 1.9 rad/s, n = 16");
         CHECK_NEAR(rigid::precession_residual(top, {a, 0.8, b, 1.9}, 16), expected, 1e-12 * expected);
     }
 
@@ -806,34 +908,36 @@ TEST_SUITE("ch04_heavy_top") {
         bad.push_back(with([](auto& s) { s.restarts = 0; }));
         bad.push_back(with([](auto& s) { s.restarts = -1; }));
         for (const rigid::PrecessionSearch& s : bad) {
-            CAPTURE(s.moments.transpose());
-            CAPTURE(s.gamma);
-            CAPTURE(s.ratio);
-            CAPTURE(s.restarts);
+            INPUTS(s);
             CHECK_THROWS_AS(rigid::min_precession_residual(s), std::invalid_argument);
         }
         // A flat body, gamma just below pi, one restart: a search, in the frame of [P, (3.3)].
         const rigid::PrecessionSearch edge = with([](auto& s) { s.gamma = std::nextafter(pi, 0.0); });
+        INPUTS(edge);
         const rigid::PrecessionFit fit = rigid::min_precession_residual(edge);
         CHECK(fit.residual >= 0);
         CHECK(fit.evaluations > 0);
         CHECK_MAT_NEAR(fit.precession.a, Vec3::UnitZ(), 1e-15);
         CHECK_NEAR(fit.precession.beta, fit.precession.alpha, 1e-15 * fit.precession.alpha);
         // gamma just above 0, b next to a: accepted as well.
-        const rigid::PrecessionFit low = rigid::min_precession_residual(with([](auto& s) { s.gamma = tiny_; }));
+        const rigid::PrecessionSearch tiny_gamma = with([](auto& s) { s.gamma = tiny_; });
+        INPUTS(tiny_gamma);
+        const rigid::PrecessionFit low = rigid::min_precession_residual(tiny_gamma);
         CHECK(low.residual >= 0);
         CHECK_MAT_NEAR(low.precession.b, Vec3::UnitZ(), 1e-300);
     }
 
     TEST_CASE("sleeping_top_min_spin: rejects A or C or f just across each rule and accepts C = 2A") {
         for (double x : {0.0, -0.0, -tiny_, inf_, -inf_, nan_}) {
-            CAPTURE(x);
+            INPUTS(x);
             CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(x, 1.0, 1.0), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, x, 1.0), std::invalid_argument);
             CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, 1.0, x), std::invalid_argument);
         }
         CHECK_THROWS_AS((void)rigid::sleeping_top_min_spin(1.0, 2.0 + 1e-12, 1.0), std::invalid_argument);
         // C = 2A, a flat disc: the threshold C^2 omega^2 = 4 A f, omega = 2 sqrt(A f) / C.
-        CHECK_NEAR(rigid::sleeping_top_min_spin(1.5, 3.0, 2.0), 2 * std::sqrt(3.0) / 3.0, 1e-15);
+        const double A = 1.5, C = 3.0, f = 2.0;
+        INPUTS(UNIT(A, "kg·m²"), UNIT(C, "kg·m²"), UNIT(f, "kg·m²/s²"));
+        CHECK_NEAR(rigid::sleeping_top_min_spin(A, C, f), 2 * std::sqrt(3.0) / 3.0, 1e-15);
     }
 }  // TEST_SUITE

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "checks.hpp"
+#include "inputs.hpp"
 
 using rigid::Mat3;
 using rigid::RegularPrecession;
@@ -46,7 +47,7 @@ TEST_SUITE("ch02_regular_precession") {
         for (int n = 0; n < 30; ++n) {
             const RegularPrecession p = random_precession();
             const double t = checks::uniform(-10, 10);
-            CAPTURE(t);
+            INPUTS(p, UNIT(t, "s"));
             CHECK_MAT_NEAR(rigid::precession_rotation(p, t), R_ref(p, t), 1e-14);
         }
     }
@@ -54,16 +55,26 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_rotation: the factors come in the order of (1.4)") {
         // a = e3, b = e1 at alpha t = beta t = pi/2: R^b R^a sends e1 to e3, R^a R^b sends e1 to e2.
         const RegularPrecession p{Vec3::UnitZ(), 1.0, Vec3::UnitX(), 1.0};
-        CHECK_MAT_NEAR(rigid::precession_rotation(p, pi / 2) * Vec3::UnitX(), Vec3::UnitZ(), 1e-15);
+        {
+            const double t = pi / 2;
+            INPUTS(p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::precession_rotation(p, t) * Vec3::UnitX(), Vec3::UnitZ(), 1e-15);
+        }
         // Body points on the a axis only turn about b [P, after (1.4)].
         const RegularPrecession q = random_precession();
-        for (double t : {0.3, 1.7, 5.0})
+        for (double t : {0.3, 1.7, 5.0}) {
+            INPUTS(q, UNIT(t, "s"));
             CHECK_MAT_NEAR(rigid::precession_rotation(q, t) * q.a, angle_axis(q.b, q.beta * t) * q.a, 1e-14);
+        }
     }
 
     TEST_CASE("precession_rotation: normalises the axes and rejects bad input") {
         const RegularPrecession p{Vec3(0, 0, 5), 1.3, Vec3(2, 0, 2), 0.7};
-        CHECK_MAT_NEAR(rigid::precession_rotation(p, 0.9), R_ref(p, 0.9), 1e-15);
+        {
+            const double t = 0.9;
+            INPUTS(p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::precession_rotation(p, t), R_ref(p, t), 1e-15);
+        }
         CHECK_THROWS_AS(rigid::precession_rotation({Vec3::Zero(), 1, Vec3::UnitX(), 1}, 0.1), std::invalid_argument);
         CHECK_THROWS_AS(rigid::precession_rotation({Vec3::UnitZ(), 1, Vec3(nan_, 0, 1), 1}, 0.1),
                         std::invalid_argument);
@@ -76,7 +87,7 @@ TEST_SUITE("ch02_regular_precession") {
         for (int n = 0; n < 20; ++n) {
             const RegularPrecession p = random_precession();
             const double t = checks::uniform(-5, 5);
-            CAPTURE(t);
+            INPUTS(p, UNIT(t, "s"));
             const Vec3 Omega = rigid::precession_body_angular_velocity(p, t);
             CHECK_MAT_NEAR(Omega, omega_fd(p, t, false), 2e-9);
         }
@@ -84,9 +95,14 @@ TEST_SUITE("ch02_regular_precession") {
 
     TEST_CASE("precession_body_angular_velocity: at t = 0 is alpha a + beta b and obeys the first form of (1.5)") {
         const RegularPrecession p{Vec3(1, 2, 2), 1.5, Vec3(0, 1, 0), 0.4};
-        CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, 0.0), 1.5 * p.a.normalized() + 0.4 * p.b, 1e-15);
+        {
+            const double t = 0.0;
+            INPUTS(p, UNIT(t, "s"));
+            CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, t), 1.5 * p.a.normalized() + 0.4 * p.b, 1e-15);
+        }
         // Omega^a + R^a(alpha t)^T Omega^b, with Omega^a = alpha a and Omega^b = beta b (1.2).
         const double t = 2.3;
+        INPUTS(p, UNIT(t, "s"));
         const Vec3 first_form = 1.5 * p.a.normalized() + angle_axis(p.a, -1.5 * t) * (0.4 * p.b);
         CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, t), first_form, 1e-15);
     }
@@ -95,7 +111,7 @@ TEST_SUITE("ch02_regular_precession") {
         for (int n = 0; n < 20; ++n) {
             const RegularPrecession p = random_precession();
             const double t = checks::uniform(-5, 5);
-            CAPTURE(t);
+            INPUTS(p, UNIT(t, "s"));
             const Vec3 omega = rigid::precession_lab_angular_velocity(p, t);
             CHECK_MAT_NEAR(omega, omega_fd(p, t, true), 2e-9);
             CHECK_MAT_NEAR(omega, R_ref(p, t) * omega_fd(p, t, false), 2e-9);
@@ -107,7 +123,8 @@ TEST_SUITE("ch02_regular_precession") {
             const RegularPrecession p = random_precession();
             const double w2 = rigid::precession_omega_squared(p);
             for (double t : {0.0, 0.37, 1.9, 7.1}) {
-                CAPTURE(t);
+                INPUTS(p);
+                INFO("expected |Omega(t)|^2 in rad^2/s^2 from finite differences of R(t) at t = " << t << " s");
                 const Vec3 Omega = omega_fd(p, t, false);
                 CHECK_NEAR(w2, Omega.squaredNorm(), 1e-9 * (1 + w2));
             }
@@ -117,10 +134,13 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_omega_squared: is not the printed (alpha + beta)^2 when a and b are not collinear") {
         // a, b at 60 degrees, alpha = 2, beta = 1: |Omega|^2 = 4 + 1 + 2 = 7, while (1.6) prints 9.
         const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3(std::sqrt(3.0) / 2, 0, 0.5), 1.0};
+        INPUTS(p);
         CHECK_NEAR(rigid::precession_omega_squared(p), omega_fd(p, 0.8, false).squaredNorm(), 1e-9);
         CHECK_NEAR(rigid::precession_omega_squared(p), 7.0, 1e-14);
         // Orthogonal a, b (the only case Theorem 1 allows): alpha^2 + beta^2.
-        CHECK_NEAR(rigid::precession_omega_squared({Vec3::UnitZ(), 2.0, Vec3::UnitX(), 1.0}), 5.0, 1e-14);
+        const RegularPrecession q{Vec3::UnitZ(), 2.0, Vec3::UnitX(), 1.0};
+        INPUTS(q);
+        CHECK_NEAR(rigid::precession_omega_squared(q), 5.0, 1e-14);
     }
 
     TEST_CASE("precession_axial_component: equals a.Omega(t) evaluated directly as in (1.7)") {
@@ -128,7 +148,8 @@ TEST_SUITE("ch02_regular_precession") {
             const RegularPrecession p = random_precession();
             const double c = rigid::precession_axial_component(p);
             for (double t : {0.0, 0.5, 2.5, 9.0}) {
-                CAPTURE(t);
+                INPUTS(p);
+                INFO("expected a.Omega(t) in rad/s from finite differences of R(t) at t = " << t << " s");
                 CHECK_NEAR(c, p.a.normalized().dot(omega_fd(p, t, false)), 1e-9);
             }
         }
@@ -139,11 +160,13 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_omega_circle: every Omega(t) lies on it and it is centred on the a axis") {
         for (int n = 0; n < 10; ++n) {
             const RegularPrecession p = random_precession();
+            INPUTS(p);
             const rigid::Circle c = rigid::precession_omega_circle(p);
             const Vec3 a = p.a.normalized();
             CHECK_NEAR(std::abs(c.normal.dot(a)), 1.0, 1e-14);
             CHECK_MAT_NEAR(c.centre - c.centre.dot(a) * a, Vec3::Zero(), 1e-14);
             for (double t : {0.0, 0.8, 2.0, 4.4}) {
+                INFO("Omega(t) - c.centre in rad/s, from finite differences of R(t) at t = " << t << " s");
                 const Vec3 d = omega_fd(p, t, false) - c.centre;
                 CHECK_NEAR(d.dot(a), 0.0, 1e-9);
                 CHECK_NEAR(d.norm(), c.radius, 1e-9);
@@ -154,8 +177,9 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_omega_circle: the radius keeps its digits for nearly collinear a and b") {
         // b at angle 1e-9 from a: radius beta sin(1e-9); sqrt(1 - (a, b)^2) would return 0 or 1.5e-8.
         const double d = 1e-9;
-        const rigid::Circle c =
-            rigid::precession_omega_circle({Vec3::UnitZ(), 1.0, Vec3(std::sin(d), 0, std::cos(d)), 2.0});
+        const RegularPrecession p{Vec3::UnitZ(), 1.0, Vec3(std::sin(d), 0, std::cos(d)), 2.0};
+        INPUTS(p);
+        const rigid::Circle c = rigid::precession_omega_circle(p);
         CHECK_NEAR(c.radius, 2 * std::sin(d), 1e-22);
     }
 
@@ -164,6 +188,8 @@ TEST_SUITE("ch02_regular_precession") {
             const Vec3 centre = checks::random_vector(3), normal = checks::random_unit();
             const double radius = checks::uniform(0.1, 2);
             const Vec3 u = normal.unitOrthogonal(), v = normal.cross(u);
+            INPUTS(centre, normal, radius, u, v);
+            INFO("points: 40, centre + radius (cos th u + sin th v) at th = 0.3 + 1.7 k, k = 0, ..., 39");
             std::vector<Vec3> pts;
             for (int k = 0; k < 40; ++k) {
                 const double th = 0.3 + 1.7 * k;  // scattered angles, all round the circle
@@ -189,12 +215,18 @@ TEST_SUITE("ch02_regular_precession") {
             saddle.push_back(Vec3(std::cos(th), std::sin(th), 0.01 * std::cos(2 * th)));
         }
         const rigid::CircleFit e = rigid::fit_circle(ellipse);
-        CHECK_NEAR(e.circle.radius, std::sqrt(2.5), 1e-12);
-        CHECK_NEAR(e.circle_residual, std::sqrt(2.5) - 1, 1e-12);
-        CHECK_SMALL(e.plane_residual, 1e-13);
-        CHECK_MAT_NEAR(e.circle.centre, Vec3(0, 0, 5), 1e-13);
+        {
+            INPUTS(n);
+            INFO("points: the ellipse (2 cos th, sin th, 5) at th = 2 pi k / n, k = 0, ..., n - 1");
+            CHECK_NEAR(e.circle.radius, std::sqrt(2.5), 1e-12);
+            CHECK_NEAR(e.circle_residual, std::sqrt(2.5) - 1, 1e-12);
+            CHECK_SMALL(e.plane_residual, 1e-13);
+            CHECK_MAT_NEAR(e.circle.centre, Vec3(0, 0, 5), 1e-13);
+        }
         // Saddle: best plane z = 0 by symmetry, so the plane residual is the height 0.01.
         const rigid::CircleFit s = rigid::fit_circle(saddle);
+        INPUTS(n);
+        INFO("points: the saddle (cos th, sin th, 0.01 cos 2 th) at th = 2 pi k / n, k = 0, ..., n - 1");
         CHECK_NEAR(s.plane_residual, 0.01, 1e-13);
         CHECK_NEAR(std::abs(s.circle.normal.z()), 1.0, 1e-12);
         CHECK_SMALL(s.circle_residual, 1e-12);
@@ -207,7 +239,10 @@ TEST_SUITE("ch02_regular_precession") {
         const Vec3 centre(10, -20, 5), normal = Vec3(1, 2, 2) / 3;
         const Vec3 u = normal.unitOrthogonal(), v = normal.cross(u);
         for (double radius : {1e-3, 1e-1}) {
-            CAPTURE(radius);
+            INPUTS(centre, normal, radius, u, v);
+            INFO(
+                "points: centre + radius (cos th u + sin th v) at th = 0.1, 0.35, 0.5, 1.2, 1.4, 2.3, 2.45, 3, 3.9, "
+                "4.1");
             std::vector<Vec3> pts;
             // Irregular angles over 3/4 of a turn: the centre is not the centroid of the points (as it
             // is for a full turn), nor on an axis of their scatter (as for evenly spaced points on an arc).
@@ -233,10 +268,18 @@ TEST_SUITE("ch02_regular_precession") {
         auto rhombus = [](double r) {
             return std::vector<Vec3>{Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, r, 0), Vec3(0, -r, 0)};
         };
-        CHECK_THROWS_AS(rigid::fit_circle(rhombus(0.5e-12)), std::invalid_argument);
-        CHECK_NOTHROW(rigid::fit_circle(rhombus(2e-12)));
+        for (double r : {0.5e-12, 2e-12}) {
+            const std::vector<Vec3> points = rhombus(r);
+            INPUTS(points);
+            if (r < 1e-12)
+                CHECK_THROWS_AS(rigid::fit_circle(points), std::invalid_argument);
+            else
+                CHECK_NOTHROW(rigid::fit_circle(points));
+        }
         // Three points of a triangle do span a plane: their circumcircle.
-        const rigid::CircleFit f = rigid::fit_circle({Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0)});
+        const std::vector<Vec3> triangle{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0)};
+        INPUTS(triangle);
+        const rigid::CircleFit f = rigid::fit_circle(triangle);
         CHECK_NEAR(f.circle.radius, 1.0, 1e-14);
     }
 
@@ -250,10 +293,7 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_lab_circle: omega(t) from R(t) lies on it and goes all the way round") {
         for (int n = 0; n < 20; ++n) {
             const RegularPrecession p = random_precession();
-            CAPTURE(p.a.transpose());
-            CAPTURE(p.b.transpose());
-            CAPTURE(p.alpha);
-            CAPTURE(p.beta);
+            INPUTS(p);
             const rigid::Circle c = rigid::precession_lab_circle(p);
             const double scale = p.alpha + p.beta;
             CHECK_NEAR(c.normal.norm(), 1.0, 1e-14);
@@ -262,18 +302,22 @@ TEST_SUITE("ch02_regular_precession") {
             Vec3 mean = Vec3::Zero();
             for (int j = 0; j < m; ++j) {
                 const double t = 2 * pi / p.beta * j / m;  // omega(t) turns with the precession
+                INFO("omega(t) in rad/s from finite differences of R(t) at t = " << t
+                                                                                 << " s, in units of alpha + beta");
                 const Vec3 w = omega_fd(p, t, true);
                 mean += w / m;
                 CHECK_NEAR((w - c.centre).dot(c.normal) / scale, 0.0, 1e-10);
                 CHECK_NEAR(((w - c.centre) - (w - c.centre).dot(c.normal) * c.normal).norm() / scale, c.radius / scale,
                            1e-10);
             }
+            INFO("the mean of omega(t) over one period (24 times), in units of alpha + beta");
             CHECK_MAT_NEAR(c.centre / scale, mean / scale, 1e-10);
         }
     }
 
     TEST_CASE("precession_lab_circle: orthogonal axes with alpha = 2 and beta = 1 give centre b and radius 2") {
         const RegularPrecession p{Vec3(0, 0, 3), 2.0, Vec3(0, 1, 0), 1.0};
+        INPUTS(p);
         const rigid::Circle c = rigid::precession_lab_circle(p);
         CHECK_MAT_NEAR(c.centre, Vec3(0, 1, 0), 1e-15);
         CHECK_MAT_NEAR(c.normal, Vec3(0, 1, 0), 1e-15);
@@ -292,22 +336,28 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE("precession_body_angular_velocity: Omega(t) = (sin 2t; cos 2t; 2) in the worked example of Chapter 2") {
         const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
         for (double t : {0.0, 0.1, 1.0, pi}) {
-            CAPTURE(t);
+            INPUTS(p, UNIT(t, "s"));
             CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, t), Vec3(std::sin(2 * t), std::cos(2 * t), 2.0),
                            1e-14);
         }
     }
 
     TEST_CASE("precession_omega_squared: 5 in the worked example of Chapter 2") {
-        CHECK_NEAR(rigid::precession_omega_squared({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 5.0, 1e-14);
+        const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
+        INPUTS(p);
+        CHECK_NEAR(rigid::precession_omega_squared(p), 5.0, 1e-14);
     }
 
     TEST_CASE("precession_axial_component: 2 in the worked example of Chapter 2") {
-        CHECK_NEAR(rigid::precession_axial_component({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0}), 2.0, 1e-14);
+        const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
+        INPUTS(p);
+        CHECK_NEAR(rigid::precession_axial_component(p), 2.0, 1e-14);
     }
 
     TEST_CASE("precession_omega_circle: centre (0; 0; 2) and radius 1 in the worked example of Chapter 2") {
-        const rigid::Circle c = rigid::precession_omega_circle({Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0});
+        const RegularPrecession p{Vec3::UnitZ(), 2.0, Vec3::UnitY(), 1.0};
+        INPUTS(p);
+        const rigid::Circle c = rigid::precession_omega_circle(p);
         CHECK_MAT_NEAR(c.centre, Vec3(0, 0, 2), 1e-14);
         CHECK_NEAR(c.radius, 1.0, 1e-14);
     }
@@ -351,56 +401,75 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE(
         "precession_rotation: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest alpha and "
         "beta") {
+        const double t0 = 0.4;
         for (const RegularPrecession& p : bad_precessions()) {
-            CAPTURE(p.alpha);
-            CAPTURE(p.beta);
-            CHECK_THROWS_AS(rigid::precession_rotation(p, 0.4), std::invalid_argument);
+            INPUTS(p, UNIT(t0, "s"));
+            CHECK_THROWS_AS(rigid::precession_rotation(p, t0), std::invalid_argument);
         }
         const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
-        for (double t : {nan_, inf_, -inf_})
+        for (double t : {nan_, inf_, -inf_}) {
+            INPUTS(good, UNIT(t, "s"));
             CHECK_THROWS_AS(rigid::precession_rotation(good, t), std::invalid_argument);
-        for (const RegularPrecession& p : edge_precessions())
+        }
+        for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p, UNIT(t0, "s"));
             CHECK_MAT_NEAR(
-                rigid::precession_rotation(p, 0.4),
-                angle_axis(p.b.stableNormalized(), p.beta * 0.4) * angle_axis(p.a.stableNormalized(), p.alpha * 0.4),
+                rigid::precession_rotation(p, t0),
+                angle_axis(p.b.stableNormalized(), p.beta * t0) * angle_axis(p.a.stableNormalized(), p.alpha * t0),
                 4e-15);
+        }
     }
 
     TEST_CASE(
         "precession_body_angular_velocity: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest "
         "alpha and beta") {
-        for (const RegularPrecession& p : bad_precessions())
-            CHECK_THROWS_AS(rigid::precession_body_angular_velocity(p, 0.4), std::invalid_argument);
+        const double t0 = 0.4;
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p, UNIT(t0, "s"));
+            CHECK_THROWS_AS(rigid::precession_body_angular_velocity(p, t0), std::invalid_argument);
+        }
         const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
-        for (double t : {nan_, inf_, -inf_})
+        for (double t : {nan_, inf_, -inf_}) {
+            INPUTS(good, UNIT(t, "s"));
             CHECK_THROWS_AS(rigid::precession_body_angular_velocity(good, t), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p, UNIT(t0, "s"));
             const Vec3 a = p.a.stableNormalized(), b = p.b.stableNormalized();
-            const Vec3 expected = p.alpha * a + p.beta * angle_axis(a, p.alpha * 0.4).transpose() * b;
-            CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, 0.4), expected, 4e-15);
+            const Vec3 expected = p.alpha * a + p.beta * angle_axis(a, p.alpha * t0).transpose() * b;
+            CHECK_MAT_NEAR(rigid::precession_body_angular_velocity(p, t0), expected, 4e-15);
         }
     }
 
     TEST_CASE(
         "precession_lab_angular_velocity: rejects alpha or beta <= 0 or a bad axis or time and accepts the smallest "
         "alpha and beta") {
-        for (const RegularPrecession& p : bad_precessions())
-            CHECK_THROWS_AS(rigid::precession_lab_angular_velocity(p, 0.4), std::invalid_argument);
+        const double t0 = 0.4;
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p, UNIT(t0, "s"));
+            CHECK_THROWS_AS(rigid::precession_lab_angular_velocity(p, t0), std::invalid_argument);
+        }
         const RegularPrecession good{Vec3(0, 0.6, 0.8), 0.7, Vec3(1, 0, 1), 1.3};
-        for (double t : {nan_, inf_, -inf_})
+        for (double t : {nan_, inf_, -inf_}) {
+            INPUTS(good, UNIT(t, "s"));
             CHECK_THROWS_AS(rigid::precession_lab_angular_velocity(good, t), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p, UNIT(t0, "s"));
             const Vec3 a = p.a.stableNormalized(), b = p.b.stableNormalized();
-            const Vec3 expected = p.beta * b + p.alpha * angle_axis(b, p.beta * 0.4) * a;
-            CHECK_MAT_NEAR(rigid::precession_lab_angular_velocity(p, 0.4), expected, 4e-15);
+            const Vec3 expected = p.beta * b + p.alpha * angle_axis(b, p.beta * t0) * a;
+            CHECK_MAT_NEAR(rigid::precession_lab_angular_velocity(p, t0), expected, 4e-15);
         }
     }
 
     TEST_CASE(
         "precession_omega_squared: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
-        for (const RegularPrecession& p : bad_precessions())
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p);
             CHECK_THROWS_AS((void)rigid::precession_omega_squared(p), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p);
             // |Omega(0)|^2 = |alpha a + beta b|^2.
             const Vec3 W0 = p.alpha * p.a.stableNormalized() + p.beta * p.b.stableNormalized();
             CHECK_NEAR(rigid::precession_omega_squared(p), W0.squaredNorm(), 4e-15);
@@ -410,9 +479,12 @@ TEST_SUITE("ch02_regular_precession") {
     TEST_CASE(
         "precession_axial_component: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and "
         "beta") {
-        for (const RegularPrecession& p : bad_precessions())
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p);
             CHECK_THROWS_AS((void)rigid::precession_axial_component(p), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p);
             const Vec3 a = p.a.stableNormalized(), W0 = p.alpha * a + p.beta * p.b.stableNormalized();
             CHECK_NEAR(rigid::precession_axial_component(p), a.dot(W0), 4e-15);
         }
@@ -420,9 +492,12 @@ TEST_SUITE("ch02_regular_precession") {
 
     TEST_CASE(
         "precession_omega_circle: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
-        for (const RegularPrecession& p : bad_precessions())
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p);
             CHECK_THROWS_AS((void)rigid::precession_omega_circle(p), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p);
             const Vec3 a = p.a.stableNormalized(), W0 = p.alpha * a + p.beta * p.b.stableNormalized();
             const rigid::Circle c = rigid::precession_omega_circle(p);
             CHECK_MAT_NEAR(c.centre, a.dot(W0) * a, 1e-15);
@@ -433,9 +508,12 @@ TEST_SUITE("ch02_regular_precession") {
 
     TEST_CASE(
         "precession_lab_circle: rejects alpha or beta <= 0 or a bad axis and accepts the smallest alpha and beta") {
-        for (const RegularPrecession& p : bad_precessions())
+        for (const RegularPrecession& p : bad_precessions()) {
+            INPUTS(p);
             CHECK_THROWS_AS((void)rigid::precession_lab_circle(p), std::invalid_argument);
+        }
         for (const RegularPrecession& p : edge_precessions()) {
+            INPUTS(p);
             const Vec3 b = p.b.stableNormalized(), w0 = p.alpha * p.a.stableNormalized() + p.beta * b;
             const rigid::Circle c = rigid::precession_lab_circle(p);
             CHECK_MAT_NEAR(c.centre, b.dot(w0) * b, 4e-15);
@@ -449,7 +527,9 @@ TEST_SUITE("ch02_regular_precession") {
         CHECK_THROWS_AS(rigid::fit_circle({Vec3::UnitX(), Vec3::UnitY(), Vec3(0, 0, inf_)}), std::invalid_argument);
         CHECK_THROWS_AS(rigid::fit_circle({}), std::invalid_argument);
         // 3 points, the fewest allowed: the circumcircle of (0, 0, 2), (0, 2, 0), (2, 0, 0).
-        const rigid::CircleFit f = rigid::fit_circle({Vec3(0, 0, 2), Vec3(0, 2, 0), Vec3(2, 0, 0)});
+        const std::vector<Vec3> points{Vec3(0, 0, 2), Vec3(0, 2, 0), Vec3(2, 0, 0)};
+        INPUTS(points);
+        const rigid::CircleFit f = rigid::fit_circle(points);
         CHECK_MAT_NEAR(f.circle.centre, Vec3(2, 2, 2) / 3, 1e-14);
         CHECK_NEAR(f.circle.radius, std::sqrt(8.0 / 3), 1e-14);
         CHECK_NEAR(std::abs(f.circle.normal.dot(Vec3(1, 1, 1) / std::sqrt(3.0))), 1.0, 1e-14);

@@ -8,10 +8,19 @@
 #include <stdexcept>
 
 #include "checks.hpp"
+#include "inputs.hpp"
 
 using rigid::Mat3;
 using rigid::Vec3;
 using std::numbers::pi;
+
+// An axis and an angle in a failure message.
+template <>
+struct checks::Show<rigid::AxisAngle> {
+    static void to(std::ostream& s, const rigid::AxisAngle& r) {
+        show_fields(s, "axis", r.axis, "angle", with_unit(r.angle, "rad"));
+    }
+};
 
 namespace {
 
@@ -40,7 +49,8 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("hat: hat(w) x equals the cross product w x x") {
         for (int n = 0; n < 20; ++n) {
             const Vec3 w = checks::random_vector(3), x = checks::random_vector(2);
-            CAPTURE(w.transpose());
+            INPUTS(w, x);
+            INPUTS(w);
             CHECK_MAT_NEAR(rigid::hat(w) * x, w.cross(x), 1e-15);
             CHECK_MAT_NEAR(rigid::hat(w).transpose(), -rigid::hat(w), 0.0);
         }
@@ -48,13 +58,15 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("hat: entries follow the Levi-Civita form hat_ij = -eps_ijk w_k") {
         const Vec3 w(0.3, -1.7, 2.5);
+        INPUTS(w);
         CHECK_MAT_NEAR(rigid::hat(w), skew_ref(w), 0.0);
     }
 
     TEST_CASE("vee: recovers w from hat(w)") {
         for (int n = 0; n < 20; ++n) {
             const Vec3 w = checks::random_vector(5);
-            CAPTURE(w.transpose());
+            INPUTS(w);
+            INPUTS(w);
             CHECK_MAT_NEAR(rigid::vee(skew_ref(w)), w, 1e-15);
         }
     }
@@ -62,6 +74,7 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("vee: a general matrix gives Omega_k = -1/2 eps_kij W_ij as in (1.1.1)") {
         Mat3 W;
         W << 1.0, 2.0, -3.0, 0.5, -4.0, 7.0, 11.0, -2.5, 0.25;
+        INPUTS(W);
         Vec3 expected = Vec3::Zero();
         for (int k = 0; k < 3; ++k)
             for (int i = 0; i < 3; ++i)
@@ -74,27 +87,33 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("rotation_about: agrees with Eigen::AngleAxisd for many axes and angles") {
         for (int n = 0; n < 50; ++n) {
             const Vec3 a = checks::random_unit();
+            INPUTS(a);
             const double phi = checks::uniform(-20, 20);
-            CAPTURE(a.transpose());
-            CAPTURE(phi);
+            INPUTS(UNIT(phi, "rad"));
+            INPUTS(a);
+            INPUTS(UNIT(phi, "rad"));
             CHECK_MAT_NEAR(rigid::rotation_about(a, phi), angle_axis(a, phi), 2e-14);
         }
     }
 
     TEST_CASE("rotation_about: turns counter-clockwise seen from the tip of a") {
         // About e3 by a quarter turn: e1 goes to e2, the rule of [P] after (1.1).
-        const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
-        CHECK_MAT_NEAR(R * Vec3::UnitX(), Vec3::UnitY(), 1e-15);
-        // Clockwise is the same angle about -a.
-        CHECK_MAT_NEAR(rigid::rotation_about(-Vec3::UnitZ(), pi / 2) * Vec3::UnitX(), -Vec3::UnitY(), 1e-15);
+        const double phi = pi / 2;
+        for (const Vec3& a : {Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitZ())}) {
+            INPUTS(a, UNIT(phi, "rad"));
+            // Clockwise is the same angle about -a.
+            CHECK_MAT_NEAR(rigid::rotation_about(a, phi) * Vec3::UnitX(), a.z() * Vec3::UnitY(), 1e-15);
+        }
     }
 
     TEST_CASE("rotation_about: is orthogonal with det 1 and fixes its axis") {
         for (int n = 0; n < 20; ++n) {
             const Vec3 a = checks::random_unit();
+            INPUTS(a);
             const double phi = checks::uniform(-7, 7);
+            INPUTS(UNIT(phi, "rad"));
             const Mat3 R = rigid::rotation_about(a, phi);
-            CAPTURE(phi);
+            INPUTS(UNIT(phi, "rad"));
             CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 4e-14);
             CHECK_NEAR(R.determinant(), 1.0, 1e-14);
             CHECK_MAT_NEAR(R * a, a, 1e-14);
@@ -103,10 +122,13 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("rotation_about: normalises an axis of any finite non-zero length") {
         const Vec3 a(1, 2, 2);  // |a| = 3
-        CHECK_MAT_NEAR(rigid::rotation_about(a, 0.8), angle_axis(a, 0.8), 1e-15);
-        // Tiny and huge axes, where a naive a / sqrt(a.a) underflows or overflows.
-        CHECK_MAT_NEAR(rigid::rotation_about(1e-200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
-        CHECK_MAT_NEAR(rigid::rotation_about(1e200 * a, 0.8), angle_axis(a, 0.8), 1e-15);
+        const double phi = 0.8;
+        // Tiny and huge axes too, where a naive a / sqrt(a.a) underflows or overflows.
+        for (double scale : {1.0, 1e-200, 1e200}) {
+            const Vec3 axis = scale * a;
+            INPUTS(axis, UNIT(phi, "rad"));
+            CHECK_MAT_NEAR(rigid::rotation_about(axis, phi), angle_axis(a, phi), 1e-15);
+        }
     }
 
     TEST_CASE("rotation_about: rejects a zero or non-finite axis and a non-finite angle") {
@@ -116,17 +138,23 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), nan_), std::invalid_argument);
         CHECK_THROWS_AS(rigid::rotation_about(Vec3::UnitX(), inf_), std::invalid_argument);
         // The smallest normal axis is still an axis: this side of the threshold must work.
-        CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, 0, 1e-300), 1.0), angle_axis(Vec3::UnitZ(), 1.0), 1e-14);
+        const Vec3 a(0, 0, 1e-300);
+        const double phi = 1.0;
+        INPUTS(a, UNIT(phi, "rad"));
+        CHECK_MAT_NEAR(rigid::rotation_about(a, phi), angle_axis(Vec3::UnitZ(), phi), 1e-14);
     }
 
     TEST_CASE("body_angular_velocity: a pure rotation has the constant Omega = alpha a of (1.2)") {
         const Vec3 a = Vec3(0.3, -0.4, 1.2).normalized();
+        INPUTS(a);
         const double alpha = 1.7;
+        INPUTS(UNIT(alpha, "rad/s"));
         for (double t : {0.0, 0.4, 2.0, 11.0}) {
-            CAPTURE(t);
+            INPUTS(UNIT(t, "s"));
             const Mat3 R = angle_axis(a, alpha * t);  // not the student's rotation_about: it is graded on its own
             // Exact derivative, d/dt R^a(alpha t) = alpha hat(a) R, written without the student's hat.
             const Mat3 R_dot = alpha * angle_axis(a, pi / 2) * (R - a * a.transpose() * R);
+            INPUTS(R);
             CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), alpha * a, 1e-14);
             // Central finite difference of R(t), step 1e-5: truncation ~ 1e-11, round-off ~ 1e-11.
             const double h = 1e-5;
@@ -138,8 +166,11 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("body_angular_velocity: returns Omega for R_dot = R hat(Omega) at any orientation") {
         for (int n = 0; n < 10; ++n) {
             const Mat3 R = random_rotation();
+            INPUTS(R);
             const Vec3 Omega = checks::random_vector(4);
+            INPUTS(Omega);
             const Mat3 R_dot = R * skew_ref(Omega);
+            INPUTS(R_dot);
             CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Omega, 1e-13);
         }
     }
@@ -147,32 +178,53 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("lab_angular_velocity: equals R Omega") {
         for (int n = 0; n < 10; ++n) {
             const Mat3 R = random_rotation();
+            INPUTS(R);
             const Vec3 Omega = checks::random_vector(4);
+            INPUTS(Omega);
             const Mat3 R_dot = R * skew_ref(Omega);
+            INPUTS(R_dot);
             CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), R * Omega, 1e-13);
         }
         // And for a pure rotation omega = Omega = alpha a [P, after (1.2)].
         const Vec3 a = Vec3(1, 1, 0).normalized();
+        INPUTS(a);
         const Mat3 R = angle_axis(a, 0.9);
+        INPUTS(R);
         const Mat3 R_dot = 2.0 * skew_ref(a) * R;
+        INPUTS(R_dot);
         CHECK_MAT_NEAR(rigid::lab_angular_velocity(R, R_dot), 2.0 * a, 1e-15);
     }
 
     TEST_CASE("orthogonality_defect: is zero for rotations and measures the departure otherwise") {
-        CHECK_SMALL(rigid::orthogonality_defect(Mat3::Identity()), 0.0);
-        CHECK_SMALL(rigid::orthogonality_defect(random_rotation()), 1e-14);
+        {
+            const Mat3 I = Mat3::Identity();
+            INPUTS(I);
+            CHECK_SMALL(rigid::orthogonality_defect(I), 0.0);
+        }
+        {
+            const Mat3 R = random_rotation();
+            INPUTS(R);
+            CHECK_SMALL(rigid::orthogonality_defect(R), 1e-14);
+        }
         // (1 + d) R has R^T R - 1 = (2d + d^2) 1, whose Frobenius norm is sqrt(3) (2d + d^2).
         const double d = 1e-3;
-        CHECK_NEAR(rigid::orthogonality_defect((1 + d) * random_rotation()), std::sqrt(3.0) * (2 * d + d * d), 1e-14);
+        const Mat3 R = (1 + d) * random_rotation();
+        INPUTS(R);
+        CHECK_NEAR(rigid::orthogonality_defect(R), std::sqrt(3.0) * (2 * d + d * d), 1e-14);
     }
 
     TEST_CASE("is_rotation: accepts rotations and rejects reflections and NaN") {
         CHECK(rigid::is_rotation(Mat3::Identity()));
-        CHECK(rigid::is_rotation(random_rotation(), 1e-14));
+        {
+            const Mat3 R = random_rotation();
+            INPUTS(R);
+            CHECK(rigid::is_rotation(R, 1e-14));
+        }
         CHECK_FALSE(rigid::is_rotation(-Mat3::Identity()));                            // det -1
         CHECK_FALSE(rigid::is_rotation(Vec3(1, 1, -1).asDiagonal().toDenseMatrix()));  // a reflection
         Mat3 bad = Mat3::Identity();
         bad(1, 2) = nan_;
+        INPUTS(bad);
         CHECK_FALSE(rigid::is_rotation(bad, 1.0));
         CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), -1.0), std::invalid_argument);
         CHECK_THROWS_AS(rigid::is_rotation(Mat3::Identity(), nan_), std::invalid_argument);
@@ -180,7 +232,9 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("is_rotation: decides both sides of the tolerance") {
         const Mat3 R = random_rotation();
+        INPUTS(R);
         const double d = 1e-8;
+        INPUTS(UNIT(d, "rad"));
         const Mat3 S = (1 + d) * R;  // defect sqrt(3) (2d + d^2) ~ 3.46e-8
         const double defect = std::sqrt(3.0) * (2 * d + d * d);
         CHECK(rigid::is_rotation(S, 1.01 * defect));
@@ -192,6 +246,7 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK(rigid::is_rotation(Mat3::Identity(), 0.0));
         Mat3 quarter;
         quarter << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // a quarter turn about e3, exact in double
+        INPUTS(quarter);
         CHECK(rigid::is_rotation(quarter, 0.0));
         // det R > 0 is required however large the tolerance on the defect: det 0 is not > 0.
         CHECK_FALSE(rigid::is_rotation(Mat3::Zero(), 100.0));
@@ -202,8 +257,8 @@ TEST_SUITE("ch01_pure_rotations") {
         // Both signs of the axis: its largest component negative, then positive.
         for (const Vec3& a : {Vec3(0.2, -0.9, 0.4).normalized(), Vec3(-0.2, 0.9, -0.4).normalized()})
             for (double phi : {1e-9, 1e-4, 0.3, pi / 2 - 1e-9, pi / 2, pi / 2 + 1e-9, 2.0, 3.0, pi - 1e-4, pi - 1e-9}) {
-                CAPTURE(a.transpose());
-                CAPTURE(phi);
+                INPUTS(a);
+                INPUTS(UNIT(phi, "rad"));
                 const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
                 CHECK_NEAR(r.angle, phi, 4e-16 * pi + 1e-15 * phi);
                 // The axis is well defined (and must be accurate) once phi is not tiny. Here R is
@@ -218,13 +273,16 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("axis_angle: a half turn gives pi and the axis up to sign") {
         const Vec3 a = Vec3(1, -2, 3).normalized();
+        INPUTS(a);
         const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, pi));
         CHECK_NEAR(r.angle, pi, 1e-15);
         CHECK_NEAR(std::abs(r.axis.dot(a)), 1.0, 1e-14);
     }
 
     TEST_CASE("axis_angle: the identity gives angle 0") {
-        const rigid::AxisAngle r = rigid::axis_angle(Mat3::Identity());
+        const Mat3 R = Mat3::Identity();
+        INPUTS(R);
+        const rigid::AxisAngle r = rigid::axis_angle(R);
         CHECK_SMALL(std::abs(r.angle), 0.0);
         CHECK_NEAR(r.axis.norm(), 1.0, 1e-15);
     }
@@ -232,9 +290,11 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("axis_angle: inverts rotation_about for random axes and angles (the graders' seed)") {
         for (int n = 0; n < 40; ++n) {
             const Vec3 a = checks::random_unit();
+            INPUTS(a);
             const double phi = checks::uniform(0.05, pi - 0.05);
-            CAPTURE(a.transpose());
-            CAPTURE(phi);
+            INPUTS(UNIT(phi, "rad"));
+            INPUTS(a);
+            INPUTS(UNIT(phi, "rad"));
             const rigid::AxisAngle r = rigid::axis_angle(angle_axis(a, phi));
             CHECK_NEAR(r.angle, phi, 1e-14);
             CHECK_MAT_NEAR(r.axis, a, 1e-13);
@@ -246,6 +306,7 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK_THROWS_AS(rigid::axis_angle(-Mat3::Identity()), std::invalid_argument);
         Mat3 bad = Mat3::Identity();
         bad(0, 0) = nan_;
+        INPUTS(bad);
         CHECK_THROWS_AS(rigid::axis_angle(bad), std::invalid_argument);
     }
 
@@ -253,6 +314,7 @@ TEST_SUITE("ch01_pure_rotations") {
         for (int n = 0; n < 50; ++n) {
             const rigid::AxisAngle first{checks::random_unit(), checks::uniform(-6, 6)};
             const rigid::AxisAngle second{checks::random_unit(), checks::uniform(-6, 6)};
+            INPUTS(first, second);
             const rigid::AxisAngle c = rigid::compose(first, second);
             CHECK_MAT_NEAR(angle_axis(c.axis, c.angle),
                            angle_axis(second.axis, second.angle) * angle_axis(first.axis, first.angle), 1e-14);
@@ -265,6 +327,7 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("compose: a half turn followed by no turn is that half turn") {
         // The half-angle vector of the result then has norm 1 exactly and its scalar part is 0.
         const Vec3 a = Vec3(1, 2, -2) / 3.0;
+        INPUTS(a);
         for (const rigid::AxisAngle& r :
              {rigid::compose({a, pi}, {Vec3::UnitX(), 0.0}), rigid::compose({Vec3::UnitY(), 0.0}, {a, pi})}) {
             CHECK_NEAR(r.angle, pi, 1e-15);
@@ -277,6 +340,7 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("compose: the order matters as for matrices") {
         const rigid::AxisAngle x{Vec3::UnitX(), pi / 2}, z{Vec3::UnitZ(), pi / 2};
+        INPUTS(x, z);
         const rigid::AxisAngle xz = rigid::compose(x, z), zx = rigid::compose(z, x);
         // Both are 120-degree turns, about (1, 1, 1) and (1, -1, 1) respectively.
         CHECK_NEAR(xz.angle, 2 * pi / 3, 1e-15);
@@ -287,6 +351,7 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("compose: a turn and its inverse give the identity and bad axes are rejected") {
         const Vec3 a = Vec3(2, 1, -1);
+        INPUTS(a);
         const rigid::AxisAngle c = rigid::compose({a, 0.7}, {-a, 0.7});
         CHECK_SMALL(std::abs(c.angle), 1e-15);
         CHECK_THROWS_AS(rigid::compose({Vec3::Zero(), 1.0}, {a, 1.0}), std::invalid_argument);
@@ -295,9 +360,11 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("geodesic_angle: equals the rotation angle and keeps tiny angles") {
         const Mat3 R = random_rotation();
+        INPUTS(R);
         const Vec3 a = checks::random_unit();
+        INPUTS(a);
         for (double phi : {1e-14, 1e-10, 1e-7, 0.5, 2.0, pi - 1e-6}) {
-            CAPTURE(phi);
+            INPUTS(UNIT(phi, "rad"));
             // R and R R^a(phi) are phi apart; acos of the trace would return 0 below ~1e-8.
             CHECK_NEAR(rigid::geodesic_angle(R, R * angle_axis(a, phi)), phi, 1e-15 + 1e-12 * phi);
         }
@@ -305,6 +372,7 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("geodesic_angle: is symmetric and invariant under a common rotation") {
         const Mat3 R1 = random_rotation(), R2 = random_rotation(), Q = random_rotation();
+        INPUTS(R1, R2, Q);
         const double d = rigid::geodesic_angle(R1, R2);
         CHECK(d > 0.0);
         CHECK_NEAR(rigid::geodesic_angle(R2, R1), d, 1e-14);
@@ -324,9 +392,10 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("rotation_between: a rotation that takes the direction of u to that of v by the angle between them") {
         for (int n = 0; n < 50; ++n) {
             const Vec3 u = checks::random_vector(3), v = checks::random_vector(2);
+            INPUTS(u, v);
             if (u.norm() < 0.1 || v.norm() < 0.1) continue;
-            CAPTURE(u.transpose());
-            CAPTURE(v.transpose());
+            INPUTS(u);
+            INPUTS(v);
             const Mat3 R = rigid::rotation_between(u, v);
             // Near opposite directions every ordinary formula (a half-way quaternion, Eigen's
             // FromTwoVectors) loses digits like eps / (1 + cos): the tolerance allows 50 times that.
@@ -345,21 +414,26 @@ TEST_SUITE("ch01_pure_rotations") {
     }
 
     TEST_CASE("rotation_between: a quarter turn about e3 for e1 to e2 and the identity for parallel vectors") {
-        CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 2 * Vec3::UnitY()), angle_axis(Vec3::UnitZ(), pi / 2),
-                       1e-15);
+        {
+            const Vec3 u = Vec3::UnitX(), v = 2 * Vec3::UnitY();
+            INPUTS(u, v);
+            CHECK_MAT_NEAR(rigid::rotation_between(u, v), angle_axis(Vec3::UnitZ(), pi / 2), 1e-15);
+        }
         const Vec3 u(0.3, -1.2, 0.4);
+        INPUTS(u);
         CHECK_MAT_NEAR(rigid::rotation_between(u, 5 * u), Mat3::Identity(), 1e-15);
         // Exactly parallel (the cross product is exactly zero): still the identity, not a half turn.
         CHECK_MAT_NEAR(rigid::rotation_between(u, u), Mat3::Identity(), 1e-15);
         CHECK_MAT_NEAR(rigid::rotation_between(Vec3::UnitX(), 3 * Vec3::UnitX()), Mat3::Identity(), 0.0);
         // 1e-9 rad apart: the angle keeps its digits (acos of the dot product would give 0 or 1.5e-8).
         const Vec3 w = angle_axis(u.cross(Vec3::UnitZ()), 1e-9) * u;
+        INPUTS(w);
         CHECK_NEAR(Eigen::AngleAxisd(rigid::rotation_between(u, w)).angle(), 1e-9, 1e-15);
     }
 
     TEST_CASE("rotation_between: opposite vectors give a half turn about an axis orthogonal to u") {
         for (const Vec3& u : {Vec3(1, 0, 0), Vec3(0, 0, -2), Vec3(0.3, -1.2, 0.4)}) {
-            CAPTURE(u.transpose());
+            INPUTS(u);
             const Mat3 R = rigid::rotation_between(u, -3 * u);
             CHECK_MAT_NEAR(R.transpose() * R, Mat3::Identity(), 1e-14);
             CHECK_NEAR(R.determinant(), 1.0, 1e-14);
@@ -382,17 +456,23 @@ TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("rotation_about: the quarter turn about e3 of the worked example of Chapter 1") {
         Mat3 hand;
         hand << 0, -1, 0, 1, 0, 0, 0, 0, 1;
-        const Mat3 R = rigid::rotation_about(Vec3::UnitZ(), pi / 2);
+        const Vec3 a = Vec3::UnitZ();
+        const double phi = pi / 2;
+        INPUTS(a, UNIT(phi, "rad"));
+        const Mat3 R = rigid::rotation_about(a, phi);
         CHECK_MAT_NEAR(R, hand, 1e-15);
         CHECK_MAT_NEAR(R * Vec3(1, 0, 2), Vec3(0, 1, 2), 1e-15);
     }
 
     TEST_CASE("body_angular_velocity: Omega = (0 0 2) at every instant in the worked example of Chapter 1") {
         const double alpha = 2;
+        INPUTS(UNIT(alpha, "rad/s"));
         for (double t : {0.0, 0.3, pi / 4}) {
-            CAPTURE(t);
+            INPUTS(UNIT(t, "s"));
             const Mat3 R = angle_axis(Vec3::UnitZ(), alpha * t);
+            INPUTS(R);
             const Mat3 R_dot = alpha * skew_ref(Vec3::UnitZ()) * R;
+            INPUTS(R_dot);
             CHECK_MAT_NEAR(rigid::body_angular_velocity(R, R_dot), Vec3(0, 0, 2), 1e-15);
         }
     }
@@ -405,21 +485,23 @@ TEST_SUITE("ch01_pure_rotations") {
 TEST_SUITE("ch01_pure_rotations") {
     TEST_CASE("rotation_about: rejects every infinite or NaN axis or angle and accepts the smallest axis") {
         for (double bad : {nan_, inf_, -inf_}) {
-            CAPTURE(bad);
+            INPUTS(bad);
             CHECK_THROWS_AS(rigid::rotation_about(Vec3(1, 2, bad), 1.0), std::invalid_argument);
             CHECK_THROWS_AS(rigid::rotation_about(Vec3(1, 2, 3), bad), std::invalid_argument);
         }
         CHECK_THROWS_AS(rigid::rotation_about(Vec3(-0.0, 0.0, -0.0), 1.0), std::invalid_argument);
         // The first axis beyond zero: the smallest positive double, still a direction.
         const double tiny = std::numeric_limits<double>::denorm_min();
+        INPUTS(tiny);
         CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, tiny, 0), 1.0), angle_axis(Vec3::UnitY(), 1.0), 1e-15);
         CHECK_MAT_NEAR(rigid::rotation_about(Vec3(0, 0, -tiny), 1.0), angle_axis(-Vec3::UnitZ(), 1.0), 1e-15);
     }
 
     TEST_CASE("is_rotation: rejects a negative or non-finite tolerance and accepts tol = 0") {
         const double tiny = std::numeric_limits<double>::denorm_min();
+        INPUTS(tiny);
         for (double bad : {-tiny, -1e-300, inf_, -inf_, nan_}) {
-            CAPTURE(bad);
+            INPUTS(bad);
             CHECK_THROWS_AS((void)rigid::is_rotation(Mat3::Identity(), bad), std::invalid_argument);
         }
         // tol = 0 is the first good tolerance: the identity (defect exactly 0) passes it, a
@@ -431,7 +513,9 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("axis_angle: rejects a defect just above 1e-9 and accepts one just below") {
         const Vec3 a = Vec3(1, -2, 2) / 3;
+        INPUTS(a);
         const Mat3 R = angle_axis(a, 1.0);
+        INPUTS(R);
         // (1 + d) R has the defect sqrt(3) (2 d + d^2).
         auto scaled = [&](double defect) { return Mat3((1 + defect / (2 * std::sqrt(3.0))) * R); };
         CHECK_THROWS_AS(rigid::axis_angle(scaled(1.05e-9)), std::invalid_argument);
@@ -446,8 +530,9 @@ TEST_SUITE("ch01_pure_rotations") {
 
     TEST_CASE("compose: rejects a bad axis or angle in either rotation and accepts the smallest axes") {
         const Vec3 a(2, 1, -1);
+        INPUTS(a);
         for (double bad : {nan_, inf_, -inf_}) {
-            CAPTURE(bad);
+            INPUTS(bad);
             CHECK_THROWS_AS(rigid::compose({a, 0.5}, {Vec3(0, bad, 1), 0.5}), std::invalid_argument);
             CHECK_THROWS_AS(rigid::compose({Vec3(bad, 0, 1), 0.5}, {a, 0.5}), std::invalid_argument);
             CHECK_THROWS_AS(rigid::compose({a, bad}, {a, 0.5}), std::invalid_argument);
@@ -456,6 +541,7 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK_THROWS_AS(rigid::compose({a, 0.5}, {Vec3::Zero(), 0.5}), std::invalid_argument);
         // Axes of length 1e-300 are axes: normalised, they compose like unit ones.
         const Vec3 b(0, 1, 3);
+        INPUTS(b);
         const rigid::AxisAngle c = rigid::compose({1e-300 * a, 0.7}, {1e-300 * b, 1.1});
         CHECK_MAT_NEAR(angle_axis(c.axis, c.angle), angle_axis(b, 1.1) * angle_axis(a, 0.7), 1e-14);
     }
@@ -465,6 +551,7 @@ TEST_SUITE("ch01_pure_rotations") {
         CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitY(), Vec3(0, 0, nan_)), std::invalid_argument);
         CHECK_THROWS_AS(rigid::rotation_between(Vec3::UnitY(), Vec3(-0.0, 0.0, 0.0)), std::invalid_argument);
         const Vec3 u = Vec3(1, 2, 2) / 3, v = Vec3(-2, 1, 0) / std::sqrt(5.0);
+        INPUTS(u, v);
         const Mat3 R = rigid::rotation_between(1e-300 * u, 1e-300 * v);
         CHECK_MAT_NEAR(R * u, v, 1e-15);
         CHECK_MAT_NEAR(R, angle_axis(u.cross(v), std::acos(u.dot(v))), 1e-14);

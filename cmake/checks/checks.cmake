@@ -147,3 +147,27 @@ function(workbook_contract_check)
                                       --work "${CMAKE_BINARY_DIR}/test/contracts")
   set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 120)
 endfunction()
+
+# ------------------------------------------------------------------------------------------
+# Every failing check shows what it was given (messages.py): each grader's failure messages, on the
+# pristine stubs and at every check of the reference (the workbook reporter with --success), must
+# name the check's inputs (tests/inputs.hpp, INPUTS), not only loop indices or bare numbers; the
+# tests messages_baseline.txt lists are known offenders, and one that no longer offends must be taken
+# out of it. A second reads the same on one planted wrong answer per exercise, as the grading run
+# shows it (tests/grading/grading.cmake). The self-test plants messages without inputs.
+function(workbook_message_check)
+  if(NOT WORKBOOK_STUB_GATE)
+    return()  # the stubs' graders are not built
+  endif()
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
+  set(script "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/messages.py")
+  set(check "code: every failing check of a grader shows its inputs, on the stubs and at every check")
+  set(selftest "code: the message check flags a failing check that shows only loop indices or a bare number")
+  add_test(NAME "${check}" COMMAND ${Python3_EXECUTABLE} "${script}" check --build "${CMAKE_BINARY_DIR}"
+                                   --root "${WORKBOOK_ROOT}")
+  add_test(NAME "${selftest}" COMMAND ${Python3_EXECUTABLE} "${script}" selftest
+                                      --work "${CMAKE_BINARY_DIR}/test/messages-selftest")
+  set_tests_properties("${check}" "${selftest}" PROPERTIES LABELS code TIMEOUT 120)
+  set_tests_properties("${selftest}" PROPERTIES PASS_REGULAR_EXPRESSION
+                       "the planted messages without inputs were flagged, and the one with them was not")
+endfunction()

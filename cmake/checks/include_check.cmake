@@ -2,7 +2,7 @@
 #   scene    (chapters/: the scenes and the kit)   nothing of tests/ but the reference
 #            (tests/include/reference/, which it must reach as "reference/<name>"), nothing of
 #            the book's room (cmake/book/) or of the quality gates (cmake/checks/)
-#   grader   (tests/<topic>_test.cpp, checks.hpp)  nothing of the grading run (tests/grading/), of
+#   grader   (tests/<topic>_test.cpp, checks.hpp, inputs.hpp) nothing of the grading run (tests/grading/), of
 #            the book's room, of the gates or of chapters/
 #   engine   (tests/grading/engine/)               nothing of chapters/ (no scene, no kit) or of the
 #            book's room
@@ -154,7 +154,7 @@ function(check plant extra out)
     if(role STREQUAL "scene")
       set(globs "chapters/*.cpp" "chapters/*.hpp")
     elseif(role STREQUAL "grader")
-      set(globs "tests/*_test.cpp" "tests/checks.hpp" "tests/include/*.hpp")
+      set(globs "tests/*_test.cpp" "tests/checks.hpp" "tests/inputs.hpp" "tests/include/*.hpp")
     else()
       set(globs "tests/grading/engine/*.cpp" "tests/grading/engine/*.hpp")
     endif()

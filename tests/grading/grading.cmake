@@ -560,6 +560,17 @@ function(_grading_tests)
   set_tests_properties("grading: the mutation gate's fixed sample of 3 mutants per topic (seed 1) is killed by the graders"
                        PROPERTIES LABELS grading TIMEOUT 1200 PROCESSORS 2)
 
+  # Every failing check shows its inputs, on one planted wrong answer per exercise as the grading run
+  # shows it to the student (cmake/checks/messages.py planted: a mutant of each exercise from the gate
+  # above, graded; the first failure of each failing test read as the message check reads the
+  # graders' own; the baseline is the same, cmake/checks/messages_baseline.txt).
+  find_package(Python3 REQUIRED COMPONENTS Interpreter)
+  add_test(NAME "grading: every failing check on a planted wrong answer per exercise shows its inputs"
+           COMMAND ${Python3_EXECUTABLE} "${WORKBOOK_ROOT}/cmake/checks/messages.py" planted --build "${CMAKE_BINARY_DIR}"
+                   --root "${WORKBOOK_ROOT}" --work "${CMAKE_BINARY_DIR}/test/messages-planted" --jobs 2)
+  set_tests_properties("grading: every failing check on a planted wrong answer per exercise shows its inputs"
+                       PROPERTIES LABELS grading TIMEOUT 1200 PROCESSORS 2)
+
   # The harness's own programs spend their time waiting for compilers and tests, not computing:
   # built at -O1 (the build's -O3 is overridden, the last -O wins), they compile in about 60% of
   # the time (grade.cpp: 12.8 s against 22.1 s, measured), which a student's first `check` waits

@@ -4,8 +4,10 @@
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "listener.hpp"
 
@@ -23,6 +25,9 @@ namespace {
 //   {"event": "start", "name": ..., "file": ..., "line": n}
 //   {"event": "assert", "file", "line", "type", "expression", "expanded", "info": [...], ...}
 //                                                           every failed check
+//   {"event": "site", ...}                                  with --success alone (the message lint,
+//                        cmake/checks/messages.py): a check that passed, the first time each check of
+//                        the test case ran, with what its failure message would hold
 //   {"event": "message", "file", "line", "text", "severity"}   MESSAGE, WARN, FAIL
 //   {"event": "exception", "text": ..., "crash": bool}      what escaped the test case
 //   {"event": "end", "name": ..., "success": bool, "failed_checks": n, "checks": n, "remote": ...}
@@ -30,6 +35,7 @@ namespace {
 struct Verdicts : checks::Listener {
     const doctest::ContextOptions& opt;
     const doctest::TestCaseData* current = nullptr;
+    std::set<std::pair<std::string, int>> sites;  // --success: the checks of this test case already shown
     explicit Verdicts(const doctest::ContextOptions& o) : opt(o) {}
 
     void emit(const nlohmann::json& j) {
@@ -61,6 +67,7 @@ struct Verdicts : checks::Listener {
     }
     void test_case_start(const doctest::TestCaseData& t) override {
         current = &t;
+        sites.clear();
         emit({{"event", "start"}, {"name", t.m_name}, {"file", text(t.m_file)}, {"line", t.m_line}});
     }
     void test_case_end(const doctest::CurrentTestCaseStats& st) override {
@@ -88,10 +95,13 @@ struct Verdicts : checks::Listener {
         emit({{"event", "exception"}, {"text", text(e.error_string)}, {"crash", e.is_crash}, {"info", info}});
     }
     void log_assert(const doctest::AssertData& a) override {
-        if (!a.m_failed) return;
-        nlohmann::json j{{"event", "assert"},      {"file", a.m_file},
-                         {"line", a.m_line},       {"type", doctest::assertString(a.m_at)},
-                         {"expression", a.m_expr}, {"expanded", text(a.m_decomp)},
+        if (!a.m_failed && !(opt.success && sites.emplace(a.m_file, a.m_line).second)) return;
+        nlohmann::json j{{"event", a.m_failed ? "assert" : "site"},
+                         {"file", a.m_file},
+                         {"line", a.m_line},
+                         {"type", doctest::assertString(a.m_at)},
+                         {"expression", a.m_expr},
+                         {"expanded", text(a.m_decomp)},
                          {"info", contexts()}};
         if (a.m_threw) j["threw"] = text(a.m_exception);
         if (a.m_exception_type) j["expected_exception"] = a.m_exception_type;
