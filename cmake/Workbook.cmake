@@ -209,6 +209,9 @@ function(workbook_topic name)
   endif()
   if(WORKBOOK_STUB_GATE)
     _workbook_topic_library(rigid_${name}_stubs "${WORKBOOK_PRISTINE_DIR}/${name}.cpp" "${ref_deps}" "${T_LIBS}")
+    # The same stubs refusing every input (tests/grading/mutants/refuse.hpp): no test may pass on them.
+    _workbook_topic_library(rigid_${name}_refusing "${WORKBOOK_PRISTINE_DIR}/${name}.cpp" "${ref_deps}" "${T_LIBS}")
+    target_compile_options(rigid_${name}_refusing PRIVATE -include "${WORKBOOK_ROOT}/tests/grading/mutants/refuse.hpp")
   endif()
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_TOPIC_LIST ${name})
   # Its graders, tests/<name>_test.cpp, labelled with its chapter of the contents.
@@ -251,8 +254,9 @@ endfunction()
 #   workbook_grader(<topic> CHAPTER <label>)
 #
 # grade_<topic> grades the chosen implementation; every test case becomes one CTest test
-# (its own process), labelled with the chapter. For the stub gate, grade_<topic>_solutions
-# and grade_<topic>_stubs grade the reference and the pristine stubs.
+# (its own process), labelled with the chapter. For the stub gate, grade_<topic>_solutions,
+# grade_<topic>_stubs and grade_<topic>_refusing grade the reference, the pristine stubs and the
+# stubs refusing every input.
 function(workbook_grader topic)
   cmake_parse_arguments(G "" "CHAPTER" "" ${ARGN})
   # The test file is compiled once; every flavour, and the grading run, links these objects.
@@ -262,11 +266,11 @@ function(workbook_grader topic)
   target_link_libraries(grade_${topic}_objects PRIVATE doctest::doctest Eigen3::Eigen workbook_reference)
   workbook_warnings(grade_${topic}_objects)
   set_property(GLOBAL APPEND PROPERTY WORKBOOK_GRADER_LIST "${topic}|${G_CHAPTER}")
-  foreach(flavour IN ITEMS "" _solutions _stubs)
+  foreach(flavour IN ITEMS "" _solutions _stubs _refusing)
     if(flavour STREQUAL "_solutions" AND WORKBOOK_IMPL STREQUAL "solutions")
       continue()  # grade_<topic> already is the reference
     endif()
-    if(flavour STREQUAL "_stubs" AND NOT WORKBOOK_STUB_GATE)
+    if(flavour MATCHES "^_(stubs|refusing)$" AND NOT WORKBOOK_STUB_GATE)
       continue()
     endif()
     set(exe grade_${topic}${flavour})
@@ -287,7 +291,9 @@ function(workbook_grader topic)
     endif()
     set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_ARGS
                  "${topic}" "$<TARGET_FILE:${ref}>" "$<TARGET_FILE:grade_${topic}_stubs>")
-    set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_TARGETS ${ref} grade_${topic}_stubs)
+    set_property(GLOBAL APPEND PROPERTY WORKBOOK_GATE_TARGETS ${ref} grade_${topic}_stubs grade_${topic}_refusing)
+    set_property(GLOBAL APPEND PROPERTY WORKBOOK_REFUSING_GATE_ARGS
+                 "${topic}" "$<TARGET_FILE:${ref}>" "$<TARGET_FILE:grade_${topic}_refusing>")
   endif()
 endfunction()
 

@@ -358,6 +358,8 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root");
         const rigid::Moments m = from_moments(1, 2, 2.5);
         INPUTS(m);
+        // A valid input first: a file that refuses every input earns nothing here.
+        CHECK_NOTHROW((void)rigid::grioli_alpha(m, 1.0));
         CHECK_THROWS_AS(rigid::grioli_alpha(m, 0.0), std::invalid_argument);
         CHECK_THROWS_AS(rigid::grioli_alpha(m, -1.0), std::invalid_argument);
         CHECK_THROWS_AS(rigid::grioli_alpha(m, nan_), std::invalid_argument);
@@ -1071,6 +1073,8 @@ TEST_SUITE("ch05_grioli_precession") {
         ALSO_USES("grioli_root");  // the closed form divides by S
         const rigid::Moments m = from_moments(1.0, 1.5, 2.2);
         INPUTS(m);
+        // A valid input first: a file that refuses every input earns nothing here.
+        CHECK_NOTHROW((void)rigid::grioli_energy(m, 1.0));
         for (double f : {0.0, -1.0, nan_, inf_})
             CHECK_THROWS_AS((void)rigid::grioli_energy(m, f), std::invalid_argument);
     }

@@ -85,6 +85,13 @@ function(workbook_stub_gate)
            COMMAND stub_gate "${topic}" "${reference}" "${reference}")
   set_tests_properties("stub gate: fails when a grader passes on its stubs" PROPERTIES
                        LABELS "gate" WILL_FAIL TRUE)
+  # The stubs refusing every input (mutants/refuse.hpp): a test made only of checks that a bad
+  # input is refused must check one valid input too, or it gives points for refusing (issue 42).
+  get_property(refusing GLOBAL PROPERTY WORKBOOK_REFUSING_GATE_ARGS)
+  add_test(NAME "stub gate: every grading test fails on stubs that refuse every input"
+           COMMAND stub_gate --stubs "the stubs that refuse every input" ${refusing})
+  set_tests_properties("stub gate: every grading test fails on stubs that refuse every input" PROPERTIES
+                       LABELS "gate" TIMEOUT 600 RESOURCE_LOCK stub_gate_reports)
   # Both write stub_gate_<topic>_*.jsonl in the build folder: never at the same time.
   set_tests_properties("stub gate: every grading test passes on solutions and fails on the stubs"
                        "stub gate: fails when a grader passes on its stubs" PROPERTIES RESOURCE_LOCK stub_gate_reports)

@@ -1,11 +1,13 @@
 // The stub gate: proves that the graders can fail.
 //
-//   stub_gate <topic> <grader built on solutions/> <grader built on the pristine stubs> ...
+//   stub_gate [--stubs <what they are>] <topic> <grader built on solutions/> <grader built on the stubs> ...
 //
 // Runs both binaries of each topic with the workbook's JSON reporter and compares, test by test:
 // every grading test must pass on the reference and fail on the stubs. A test that passes
 // on a stub asserts nothing the student has to do; a test that fails on the reference is
-// wrong. Either is named, and the gate fails. So does a topic with no tests, a test present
+// wrong. The second graders are the pristine stubs' (todo(...) throws rigid::not_implemented), or
+// (--stubs) the stubs that refuse every input (mutants/refuse.hpp): a test that passes on those
+// gives points for refusing. Either is named, and the gate fails. So does a topic with no tests, a test present
 // in one binary only, or a test name that doctest's filters would misread.
 #include <unistd.h>
 
@@ -46,9 +48,11 @@ std::map<std::string, bool> run(const std::string& binary, const std::string& re
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> args;  // topic, solutions grader, stubs grader, ...
+    std::vector<std::string> args;             // topic, solutions grader, stubs grader, ...
+    std::string stubs = "the pristine stubs";  // what the second grader of each topic grades
     CLI::App app{"stub_gate"};
     app.set_help_flag();
+    app.add_option("--stubs", stubs);
     app.add_option("graders", args)->required();
     try {
         app.parse(argc, argv);
@@ -56,7 +60,7 @@ int main(int argc, char** argv) {
         args.clear();
     }
     if (args.empty() || args.size() % 3 != 0) {
-        std::cerr << "usage: stub_gate <topic> <solutions grader> <stubs grader> [...]\n";
+        std::cerr << "usage: stub_gate [--stubs <what they are>] <topic> <solutions grader> <stubs grader> [...]\n";
         return 2;
     }
     int tests = 0;
@@ -83,7 +87,7 @@ int main(int argc, char** argv) {
             if (s == stub.end())
                 problems.push_back(topic + ": did not run on the stubs: \"" + name + "\"");
             else if (s->second)
-                problems.push_back(topic + ": PASSES on the pristine stubs: \"" + name + "\"");
+                problems.push_back(topic + ": PASSES on " + stubs + ": \"" + name + "\"");
         }
         for (const auto& [name, passed] : stub)
             if (!ref.count(name)) problems.push_back(topic + ": ran on the stubs only: \"" + name + "\"");
@@ -95,6 +99,6 @@ int main(int argc, char** argv) {
         for (const auto& p : problems) std::cout << "  " << p << "\n";
         return 1;
     }
-    std::cout << "stub gate: all " << tests << " grading tests pass on solutions/ and fail on the pristine stubs\n";
+    std::cout << "stub gate: all " << tests << " grading tests pass on solutions/ and fail on " << stubs << "\n";
     return 0;
 }
