@@ -144,7 +144,9 @@ Said read_verdict(const Setup& setup, const std::string& lines, const std::strin
 std::string first_error(const std::string& log) {
     for (const auto& line : split(log, '\n')) {
         if (starts_with(line, "collect2:")) continue;
-        if (line.find("error:") != std::string::npos || line.find("undefined reference") != std::string::npos ||
+        // gas's own errors ("<file>.s:12: Error: no such instruction: ...") come from an asm statement.
+        if (line.find("error:") != std::string::npos || line.find(": Error: ") != std::string::npos ||
+            line.find("undefined reference") != std::string::npos ||
             line.find("multiple definition") != std::string::npos || line.find("out of memory") != std::string::npos ||
             line.find("memory exhausted") != std::string::npos)
             return trim(line);

@@ -254,7 +254,9 @@ std::string prepare_launch(const std::vector<std::string>& argv, const std::stri
     }
     for (const auto& a : l.command) l.args.push_back(const_cast<char*>(a.c_str()));
     l.args.push_back(nullptr);
-    const char* path = std::getenv("PATH");
+    // A sandboxed program gets the system's PATH, not the harness's (root's home folders, an
+    // instructor's own tools: issue 42); the trusted ones (the judge) keep the harness's.
+    const char* path = sandboxed ? nullptr : std::getenv("PATH");
     const std::string home = l.namespaces ? (test ? "/work" : "/tmp") : cwd;
     l.environment = {std::string("PATH=") + (path ? path : "/usr/local/bin:/usr/bin:/bin"), "LC_ALL=C", "LANG=C",
                      "HOME=" + home, "TMPDIR=" + home};
