@@ -791,7 +791,7 @@ std::string results_tsv(const SubmissionResult& r, const std::string& json) {
         std::snprintf(max_score, sizeof max_score, "%.17g", t.max_score);
         out += "test\t" + t.chapter + "\t" + t.topic + "\t" + t.exercise + "\t" + to_string(t.verdict) + "\t" + score +
                "\t" + max_score + "\t" + (t.not_started ? "1" : "0") + "\t" + flat(t.name) + "\t" +
-               flat(first_lines(t.message, 300)) + "\n";
+               flat(first_lines(t.message, 2000)) + "\n";  // room for the inputs, expected, actual and tolerance
     }
     return out;
 }
