@@ -455,7 +455,8 @@ Outcome link(const Grading& g, const Topic& topic, const std::string& job, const
 // limit let an ifunc through).
 std::string object_problem(const Grading& g, const Topic& topic, const std::string& job) {
     if (g.setup.nm.empty()) return {};
-    const std::string listing = job + "/symbols.txt";
+    // In the harness's own folder, not the job's, which the build's user may write.
+    const std::string listing = g.work_dir + "/logs/" + topic.name + ".symbols.txt";
     const View view = view_of(g.options.stage, job);
     const Outcome o = in_turn(g.options.stage, [&] {
         return run_limited({g.setup.nm, view.submission + "/obj/" + topic.name + ".o"}, job, listing,
